@@ -1,0 +1,87 @@
+#include "command_line.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "duet/version.hpp"
+
+namespace duet::cli {
+namespace {
+
+struct Outcome {
+  ExitCode exit_code;
+  std::string out;
+  std::string err;
+};
+
+Outcome run(std::vector<std::string> arguments) {
+  std::ostringstream out;
+  std::ostringstream err;
+  const ExitCode exit_code = run_command_line(arguments, {out, err});
+  return {exit_code, out.str(), err.str()};
+}
+
+TEST(CommandLine, HelpListsEverySubcommand) {
+  const Outcome outcome = run({"--help"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success);
+  for (const Subcommand& subcommand : subcommands()) {
+    EXPECT_NE(outcome.out.find(std::string{subcommand.name}), std::string::npos) << subcommand.name;
+    EXPECT_NE(outcome.out.find(std::string{subcommand.summary}), std::string::npos) << subcommand.name;
+  }
+  EXPECT_EQ(outcome.err, "");
+}
+
+TEST(CommandLine, EverySubcommandHasHelp) {
+  for (const Subcommand& subcommand : subcommands()) {
+    const Outcome outcome = run({std::string{subcommand.name}, "--help"});
+    EXPECT_EQ(outcome.exit_code, ExitCode::success) << subcommand.name;
+    EXPECT_NE(outcome.out.find("duet " + std::string{subcommand.name}), std::string::npos) << outcome.out;
+    EXPECT_NE(outcome.out.find(std::string{subcommand.summary}), std::string::npos) << outcome.out;
+  }
+}
+
+TEST(CommandLine, VersionPrintsTheProjectVersion) {
+  const Outcome outcome = run({"--version"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success);
+  EXPECT_EQ(outcome.out, "duet " + std::string{version} + "\n");
+}
+
+TEST(CommandLine, UnknownSubcommandIsAUsageErrorNamingTheWord) {
+  const Outcome outcome = run({"nonsense"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_EQ(outcome.err, "duet: 'nonsense' is not a duet command. See 'duet --help'.\n");
+  EXPECT_EQ(outcome.out, "");
+}
+
+TEST(CommandLine, MistypedSubcommandGetsASuggestion) {
+  const Outcome outcome = run({"shced", "tasks.yaml"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_EQ(outcome.err, "duet: 'shced' is not a duet command. Did you mean 'sched'? See 'duet --help'.\n");
+}
+
+TEST(CommandLine, UnknownOptionIsAUsageErrorNamingTheOption) {
+  for (const std::vector<std::string>& arguments :
+       {std::vector<std::string>{"--bogus"}, std::vector<std::string>{"sim", "--bogus"}}) {
+    const Outcome outcome = run(arguments);
+    EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+    EXPECT_NE(outcome.err.find("'--bogus'"), std::string::npos) << outcome.err;
+  }
+}
+
+TEST(CommandLine, NoSubcommandIsAUsageError) {
+  const Outcome outcome = run({});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_NE(outcome.err.find("duet --help"), std::string::npos) << outcome.err;
+}
+
+TEST(CommandLine, PlannedSubcommandSaysSoAndFails) {
+  const Outcome outcome = run({"sched"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, "duet sched: not implemented yet (planned in issue #6)\n");
+}
+
+}  // namespace
+}  // namespace duet::cli

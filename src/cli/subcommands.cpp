@@ -1,0 +1,32 @@
+#include <CLI/CLI.hpp>
+
+#include <ostream>
+
+#include "subcommand.hpp"
+
+namespace duet::cli {
+namespace {
+
+// Subcommands whose issue has not landed yet: they show up in --help and say where their work is planned.
+template <int issue>
+Action planned(CLI::App& command) {
+  return [name = command.get_name()](Streams streams) {
+    streams.err << "duet " << name << ": not implemented yet (planned in issue #" << issue << ")\n";
+    return ExitCode::failure;
+  };
+}
+
+constexpr Subcommand table[] = {
+    {"xcp", "Talk XCP to a target: connect, read and write memory, record signals with DAQ", planned<4>},
+    {"sim", "Simulate a model against a plant model on the PC", planned<7>},
+    {"gen", "Generate freestanding C++, the A2L file and the task table from a model", planned<7>},
+    {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", planned<6>},
+    {"monitor", "Serve the dashboard for a target reached over XCP", planned<10>},
+    {"model", "Check a model file and describe its blocks, signals and tasks", planned<7>},
+};
+
+}  // namespace
+
+std::span<const Subcommand> subcommands() { return table; }
+
+}  // namespace duet::cli
