@@ -1,0 +1,35 @@
+#include "duet/mps2_an386/cmsdk_uart.hpp"
+
+#include "duet/cortex_m/registers.hpp"
+
+namespace duet::mps2_an386 {
+namespace {
+
+using cortex_m::register32;
+
+// Register offsets and bits (Arm CoreLink CMSDK, APB UART).
+constexpr std::uintptr_t data = 0x00;
+constexpr std::uintptr_t state = 0x04;
+constexpr std::uintptr_t control = 0x08;
+constexpr std::uintptr_t baud_divider = 0x10;
+constexpr std::uint32_t transmit_buffer_full = 1U << 0;
+constexpr std::uint32_t transmit_enable = 1U << 0;
+constexpr std::uint32_t smallest_baud_divider = 16;  // the UART rejects smaller dividers
+
+}  // namespace
+
+void CmsdkUart::enable_transmitter(std::uint32_t peripheral_clock_hz, std::uint32_t baud_rate) const {
+  const std::uint32_t divider = peripheral_clock_hz / baud_rate;
+  register32(base_ + baud_divider) = divider < smallest_baud_divider ? smallest_baud_divider : divider;
+  register32(base_ + control) = register32(base_ + control) | transmit_enable;
+}
+
+void CmsdkUart::write(std::string_view text) const {
+  for (char character : text) {
+    while ((register32(base_ + state) & transmit_buffer_full) != 0) {
+    }
+    register32(base_ + data) = static_cast<unsigned char>(character);
+  }
+}
+
+}  // namespace duet::mps2_an386

@@ -1,0 +1,34 @@
+#pragma once
+// QEMU's mps2-an386: an Arm MPS2 FPGA board image with a Cortex-M4F (Application Note 386), as QEMU 7.2 models it.
+// Numbers from shared/facts/qemu-mps2-an386.md.
+
+#include <cstdint>
+
+namespace duet::mps2_an386 {
+
+inline constexpr std::uint32_t core_clock_hz = 25'000'000;
+inline constexpr std::uint32_t peripheral_clock_hz = 25'000'000;
+inline constexpr unsigned device_interrupt_count = 48;
+
+// CMSDK APB peripherals.
+inline constexpr std::uintptr_t timer0_base = 0x4000'0000;
+inline constexpr std::uintptr_t timer1_base = 0x4000'1000;
+inline constexpr std::uintptr_t uart0_base = 0x4000'4000;
+inline constexpr std::uintptr_t uart1_base = 0x4000'5000;
+inline constexpr std::uintptr_t uart2_base = 0x4000'6000;
+
+// Device interrupt numbers (exception number minus 16).
+inline constexpr unsigned uart0_receive_interrupt = 0;
+inline constexpr unsigned uart0_transmit_interrupt = 1;
+inline constexpr unsigned uart1_receive_interrupt = 2;
+inline constexpr unsigned uart1_transmit_interrupt = 3;
+inline constexpr unsigned uart2_receive_interrupt = 4;
+inline constexpr unsigned uart2_transmit_interrupt = 5;
+inline constexpr unsigned timer0_interrupt = 8;
+inline constexpr unsigned timer1_interrupt = 9;
+inline constexpr unsigned dual_timer_interrupt = 10;
+
+// Brings up what the board hooks need (the console on UART0). Call first in main.
+void initialize();
+
+}  // namespace duet::mps2_an386

@@ -1,0 +1,23 @@
+#pragma once
+// The Arm CMSDK APB timer (QEMU's cmsdk-apb-timer): a 32-bit down-counter that reloads and can interrupt at zero.
+
+#include <cstdint>
+
+namespace duet::mps2_an386 {
+
+class CmsdkTimer {
+ public:
+  explicit constexpr CmsdkTimer(std::uintptr_t base) : base_(base) {}
+
+  // Interrupts every `period_cycles` peripheral clock cycles (at least 2), starting one period from now.
+  void start_periodic_interrupt(std::uint32_t period_cycles) const;
+  void stop() const;
+
+  // Acknowledges the interrupt; the handler must call it, or the interrupt is taken again at once. Interrupt-safe.
+  void clear_interrupt() const;
+
+ private:
+  std::uintptr_t base_;
+};
+
+}  // namespace duet::mps2_an386

@@ -1,0 +1,23 @@
+#pragma once
+// The Arm CMSDK APB UART (QEMU's cmsdk-apb-uart): a one-byte transmit and receive buffer, no FIFO.
+
+#include <cstdint>
+#include <string_view>
+
+namespace duet::mps2_an386 {
+
+class CmsdkUart {
+ public:
+  explicit constexpr CmsdkUart(std::uintptr_t base) : base_(base) {}
+
+  // Enables the transmitter at `baud_rate` derived from the peripheral clock. QEMU ignores the rate; hardware does not.
+  void enable_transmitter(std::uint32_t peripheral_clock_hz, std::uint32_t baud_rate) const;
+
+  // Writes every byte of `text`, waiting while the transmit buffer is full. Blocks: not for interrupt handlers.
+  void write(std::string_view text) const;
+
+ private:
+  std::uintptr_t base_;
+};
+
+}  // namespace duet::mps2_an386

@@ -1,0 +1,46 @@
+// The vector table of mps2-an386: 48 device interrupts. Interrupts with a name here can be handled by defining a
+// function of that name; the others report themselves as unhandled.
+
+#include "duet/cortex_m/vector_table.hpp"
+#include "duet/mps2_an386/board.hpp"
+
+// Weak: an application's definition of the same name replaces it. Default_Handler reads the active exception number,
+// so its report names the right interrupt.
+#define DUET_WEAK_INTERRUPT_HANDLER(name) \
+  extern "C" __attribute__((weak)) void name() { Default_Handler(); }
+
+DUET_WEAK_INTERRUPT_HANDLER(UART0_RX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART0_TX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART1_RX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART1_TX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART2_RX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART2_TX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(TIMER0_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(TIMER1_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(DUALTIMER_IRQHandler)
+
+namespace {
+
+using duet::cortex_m::ExceptionHandler;
+using duet::cortex_m::VectorTable;
+namespace board = duet::mps2_an386;
+
+constexpr auto device_interrupt_handlers = [] {
+  std::array<ExceptionHandler, board::device_interrupt_count> handlers{};
+  handlers.fill(Default_Handler);
+  handlers[board::uart0_receive_interrupt] = UART0_RX_IRQHandler;
+  handlers[board::uart0_transmit_interrupt] = UART0_TX_IRQHandler;
+  handlers[board::uart1_receive_interrupt] = UART1_RX_IRQHandler;
+  handlers[board::uart1_transmit_interrupt] = UART1_TX_IRQHandler;
+  handlers[board::uart2_receive_interrupt] = UART2_RX_IRQHandler;
+  handlers[board::uart2_transmit_interrupt] = UART2_TX_IRQHandler;
+  handlers[board::timer0_interrupt] = TIMER0_IRQHandler;
+  handlers[board::timer1_interrupt] = TIMER1_IRQHandler;
+  handlers[board::dual_timer_interrupt] = DUALTIMER_IRQHandler;
+  return handlers;
+}();
+
+}  // namespace
+
+[[gnu::section(".vector_table"), gnu::used]] constinit const VectorTable<board::device_interrupt_count> vector_table{
+    duet::cortex_m::__stack_end, duet::cortex_m::system_exception_handlers, device_interrupt_handlers};
