@@ -2,6 +2,7 @@
 // function of that name; the others report themselves as unhandled.
 
 #include "duet/cortex_m/vector_table.hpp"
+
 #include "duet/mps2_an386/board.hpp"
 
 // Weak: an application's definition of the same name replaces it. Default_Handler reads the active exception number,
@@ -21,13 +22,11 @@ DUET_WEAK_INTERRUPT_HANDLER(DUALTIMER_IRQHandler)
 
 namespace {
 
-using duet::cortex_m::ExceptionHandler;
 using duet::cortex_m::VectorTable;
 namespace board = duet::mps2_an386;
 
 constexpr auto device_interrupt_handlers = [] {
-  std::array<ExceptionHandler, board::device_interrupt_count> handlers{};
-  handlers.fill(Default_Handler);
+  auto handlers = duet::cortex_m::unhandled_device_interrupts<board::device_interrupt_count>();
   handlers[board::uart0_receive_interrupt] = UART0_RX_IRQHandler;
   handlers[board::uart0_transmit_interrupt] = UART0_TX_IRQHandler;
   handlers[board::uart1_receive_interrupt] = UART1_RX_IRQHandler;

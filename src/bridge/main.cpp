@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <sys/utsname.h>
 
+#include <exception>
 #include <iostream>
 #include <string>
 
@@ -19,9 +20,14 @@ std::string machine() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"duet-bridge: relays XCP between the real-time core and TCP (arrives with issue #5)", "duet-bridge"};
-  app.set_version_flag("--version", "duet-bridge " + std::string{duet::version} + " on " + machine());
-  CLI11_PARSE(app, argc, argv);
-  std::cerr << "duet-bridge: the relay is not implemented yet (planned in issue #5)\n";
-  return 1;
+  try {
+    CLI::App app{"duet-bridge: relays XCP between the real-time core and TCP (arrives with issue #5)", "duet-bridge"};
+    app.set_version_flag("--version", "duet-bridge " + std::string{duet::version} + " on " + machine());
+    CLI11_PARSE(app, argc, argv);
+    std::cerr << "duet-bridge: the relay is not implemented yet (planned in issue #5)\n";
+    return 1;
+  } catch (const std::exception& error) {
+    std::cerr << "duet-bridge: internal error: " << error.what() << '\n';
+    return 1;
+  }
 }

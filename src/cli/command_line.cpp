@@ -2,7 +2,6 @@
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <ostream>
 #include <vector>
 
@@ -12,8 +11,7 @@
 namespace duet::cli {
 namespace {
 
-constexpr std::string_view exit_codes =
-    "Exit codes: 0 success, 1 the command failed, 2 the command line is wrong.";
+constexpr std::string_view exit_codes = "Exit codes: 0 success, 1 the command failed, 2 the command line is wrong.";
 
 std::vector<std::string_view> subcommand_names() {
   std::vector<std::string_view> names;

@@ -14,7 +14,8 @@ inline constexpr unsigned priority_levels = 1U << priority_bits;
 inline constexpr unsigned max_interrupt_count = 496;
 
 // `priority` must be below priority_levels; a larger value is taken as the least urgent level rather than wrapping
-// round to a more urgent one. All are interrupt-safe: each is a single store or read-modify-write of a byte the caller owns.
+// round to a more urgent one. All are interrupt-safe: each is a single store or read-modify-write of a byte the caller
+// owns.
 void enable_interrupt(unsigned interrupt_number);
 void disable_interrupt(unsigned interrupt_number);
 void set_interrupt_pending(unsigned interrupt_number);

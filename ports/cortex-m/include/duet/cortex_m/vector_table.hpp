@@ -37,9 +37,17 @@ void Default_Handler();
 namespace duet::cortex_m {
 
 inline constexpr std::array<ExceptionHandler, 15> system_exception_handlers{
-    Reset_Handler,   NMI_Handler, HardFault_Handler, MemManage_Handler, BusFault_Handler,
-    UsageFault_Handler, nullptr,  nullptr,           nullptr,           nullptr,
-    SVC_Handler,     DebugMon_Handler, nullptr,      PendSV_Handler,    SysTick_Handler};
+    Reset_Handler,      NMI_Handler,      HardFault_Handler, MemManage_Handler, BusFault_Handler,
+    UsageFault_Handler, nullptr,          nullptr,           nullptr,           nullptr,
+    SVC_Handler,        DebugMon_Handler, nullptr,           PendSV_Handler,    SysTick_Handler};
+
+// A board's device interrupt handlers before it names any: every one reports itself as unhandled.
+template <std::size_t DeviceInterruptCount>
+constexpr std::array<ExceptionHandler, DeviceInterruptCount> unhandled_device_interrupts() {
+  std::array<ExceptionHandler, DeviceInterruptCount> handlers{};
+  handlers.fill(Default_Handler);
+  return handlers;
+}
 
 // The top of the stack, placed by the board's linker script.
 extern "C" char __stack_end[];

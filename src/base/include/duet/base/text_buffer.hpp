@@ -4,6 +4,7 @@
 #include <concepts>
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 
 namespace duet {
 
@@ -27,12 +28,11 @@ class TextBuffer {
     } else {
       char digits[20];  // 2^64 has 20 decimal digits
       std::size_t count = 0;
-      // Work on the magnitude as unsigned so that the most negative value needs no special case.
-      unsigned long long magnitude = static_cast<unsigned long long>(value);
-      if (value < 0) {
-        push('-');
-        magnitude = 0ULL - magnitude;
-      }
+      // Negate as unsigned, where the most negative value has a magnitude too.
+      using Unsigned = std::make_unsigned_t<Integer>;
+      const auto bits = static_cast<Unsigned>(value);
+      unsigned long long magnitude = value < 0 ? static_cast<Unsigned>(Unsigned{0} - bits) : bits;
+      if (value < 0) push('-');
       do {
         digits[count++] = static_cast<char>('0' + magnitude % 10U);
         magnitude /= 10U;
