@@ -35,9 +35,9 @@ extern "C" [[noreturn]] void Reset_Handler() {
   for (std::uint32_t *from = __data_load_start, *to = __data_start; to < __data_end;) *to++ = *from++;
   for (std::uint32_t* word = __bss_start; word < __bss_end;) *word++ = 0;
   for (auto constructor = __init_array_start; constructor < __init_array_end; ++constructor) (*constructor)();
-    // ISO C++ forbids calling main for hosted programs, where the C library does; here start-up code is that library.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"
+  // ISO C++ forbids calling main, which in a hosted program the C library calls; here start-up code is that library.
   const int exit_code = main();
 #pragma GCC diagnostic pop
   duet::cortex_m::halt(exit_code);
