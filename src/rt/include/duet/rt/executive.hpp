@@ -1,0 +1,190 @@
+#pragma once
+// The executive: runs a model's periodic rates from a base timer interrupt and its interrupt tasks from their
+// interrupt handlers, measures every task, detects overruns, and carries the model through its lifecycle:
+//
+//   initialize() -> [wait for a start request] -> running -> stop (model, external mode, final tick, overrun)
+//                -> terminate()
+//
+// The board owns main: it calls initialize(), run() and terminate(), and forwards its interrupt handlers to
+// on_base_tick(), on_rate_interrupt() and on_interrupt_task(). The port (see ExecutivePort) is the only thing the
+// executive knows of the hardware.
+
+#include <array>
+#include <atomic>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+
+#include "duet/rt/nested_timing.hpp"
+#include "duet/rt/task_statistics.hpp"
+#include "duet/rt/task_table.hpp"
+
+namespace duet::rt {
+
+// What the executive needs of the platform. Interrupt-side calls must not block.
+template <typename Port>
+concept ExecutivePort = requires(Port& port, std::size_t rate, std::uint32_t period_ns) {
+  { port.cycles() } -> std::same_as<std::uint32_t>;  // a free-running cycle counter; wraps
+  port.start_base_timer(period_ns);                  // calls on_base_tick() every period from now on
+  port.stop_base_timer();
+  { port.base_tick_pending() } -> std::same_as<bool>;  // the next tick came while this one ran
+  port.skip_base_tick();                               // forget that pending tick
+  port.trigger_rate(rate);         // multitasking: pend the software interrupt that calls on_rate_interrupt(rate)
+  port.idle();                     // what the core does between interrupts
+  typename Port::CriticalSection;  // masks the interrupts that run tasks while it exists
+};
+
+enum class ExecutiveState : std::uint8_t { created, waiting_for_start, ready, running, stopping, stopped, terminated };
+enum class StopReason : std::uint8_t { none, model, external, final_tick, overrun };
+
+template <ExecutivePort Port, std::size_t TaskCapacity>
+class Executive {
+ public:
+  Executive(const ModelDescription& model, Port& port) : model_(model), port_(port) {}
+
+  // Checks the task table and runs the model's initialize. Nothing else runs if this fails.
+  [[nodiscard]] TaskTableError initialize() {
+    if (model_.tasks.size() > TaskCapacity) return TaskTableError::too_many_tasks;
+    if (const TaskTableError error = check(model_); error != TaskTableError::none) return error;
+    rates_ = rate_count(model_);
+    model_.initialize();
+    state_ = model_.wait_for_start ? ExecutiveState::waiting_for_start : ExecutiveState::ready;
+    return TaskTableError::none;
+  }
+
+  // Runs the model until it stops: waits for start() if the model asks for it, then begin(), idle, end().
+  // Blocks; call from main.
+  void run() {
+    while (state_ == ExecutiveState::waiting_for_start) port_.idle();
+    if (begin()) {
+      while (state_ == ExecutiveState::running) port_.idle();
+    }
+    end();
+  }
+
+  // The two halves of run() for a caller that drives time itself (lock-step simulation): begin() starts the base
+  // timer if the model is ready (returns false otherwise), end() stops it.
+  bool begin() {
+    ExecutiveState ready = ExecutiveState::ready;
+    if (!state_.compare_exchange_strong(ready, ExecutiveState::running)) return false;
+    port_.start_base_timer(model_.base_period_ns);
+    return true;
+  }
+
+  void end() {
+    port_.stop_base_timer();
+    state_ = ExecutiveState::stopped;
+  }
+
+  // Runs the model's terminate, once, after run() returned.
+  void terminate() {
+    if (state_ == ExecutiveState::stopped) {
+      model_.terminate();
+      state_ = ExecutiveState::terminated;
+    }
+  }
+
+  // External mode's start request. Interrupt-safe.
+  void start() {
+    ExecutiveState waiting = ExecutiveState::waiting_for_start;
+    state_.compare_exchange_strong(waiting, ExecutiveState::ready);
+  }
+
+  // Stops the model at the end of the current tick; the first reason given is kept. Interrupt-safe.
+  void request_stop(StopReason reason) {
+    for (ExecutiveState state : {ExecutiveState::waiting_for_start, ExecutiveState::ready, ExecutiveState::running}) {
+      ExecutiveState expected = state;
+      if (state_.compare_exchange_strong(expected, ExecutiveState::stopping)) {
+        stop_reason_ = reason;
+        return;
+      }
+    }
+  }
+
+  // The base timer's interrupt handler. Single-tasking runs every due rate here, fastest first; multitasking runs
+  // the base rate and triggers the software interrupt of each due slower rate.
+  void on_base_tick() {
+    if (state_ != ExecutiveState::running) return;
+    const std::uint32_t now = port_.cycles();
+    if (ticks_ != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
+    previous_tick_cycles_ = now;
+
+    run_measured(0);
+    for (std::size_t rate = 1; rate < rates_; ++rate) {
+      if (!is_release_tick(rate)) continue;
+      if (model_.tasking_mode == TaskingMode::single) {
+        run_measured(rate);
+      } else if (rate_released_[rate].exchange(true)) {
+        overrun(rate);  // the previous activation has not finished
+      } else {
+        port_.trigger_rate(rate);
+      }
+    }
+    ++ticks_;
+
+    if (port_.base_tick_pending()) overrun(0);
+    if (model_.final_tick != 0 && ticks_ >= model_.final_tick) request_stop(StopReason::final_tick);
+  }
+
+  // Multitasking: the software interrupt of a slower rate.
+  void on_rate_interrupt(std::size_t rate) {
+    if (state_ == ExecutiveState::running) run_measured(rate);
+    rate_released_[rate] = false;
+  }
+
+  // The interrupt handler of an interrupt-triggered task (its index in the task table).
+  void on_interrupt_task(std::size_t task) {
+    if (state_ == ExecutiveState::running) run_measured(task);
+  }
+
+  // True while the base tick `ticks()` releases `rate`: what deterministic rate transitions ask in the faster task.
+  [[nodiscard]] bool is_release_tick(std::size_t rate) const { return ticks_ % model_.tasks[rate].period_ticks == 0; }
+
+  // Base ticks so far; during a base-rate step, the index of the current tick.
+  [[nodiscard]] std::uint64_t ticks() const { return ticks_; }
+  [[nodiscard]] ExecutiveState state() const { return state_; }
+  [[nodiscard]] StopReason stop_reason() const { return stop_reason_; }
+  [[nodiscard]] const TaskStatistics& statistics(std::size_t task) const { return statistics_[task]; }
+  [[nodiscard]] CoreLoad load() const { return {timing_.busy_cycles(), load_.elapsed_cycles}; }
+
+ private:
+  void run_measured(std::size_t task) {
+    {
+      [[maybe_unused]] const typename Port::CriticalSection masked;
+      timing_.begin(port_.cycles());
+    }
+    if constexpr (requires { port_.task_started(task); }) port_.task_started(task);
+    model_.tasks[task].entry();
+    if constexpr (requires { port_.task_finished(task); }) port_.task_finished(task);
+    std::uint32_t net_cycles = 0;
+    {
+      [[maybe_unused]] const typename Port::CriticalSection masked;
+      net_cycles = timing_.end(port_.cycles());
+    }
+    statistics_[task].record(net_cycles);
+  }
+
+  void overrun(std::size_t task) {
+    ++statistics_[task].overruns;
+    if (model_.overrun_policy == OverrunPolicy::stop) {
+      request_stop(StopReason::overrun);
+    } else if (task == 0) {
+      port_.skip_base_tick();
+      ++ticks_;  // the tick happened; its activations are dropped
+    }
+  }
+
+  const ModelDescription& model_;
+  Port& port_;
+  std::size_t rates_ = 0;
+  std::atomic<ExecutiveState> state_{ExecutiveState::created};
+  StopReason stop_reason_ = StopReason::none;
+  std::uint64_t ticks_ = 0;
+  std::uint32_t previous_tick_cycles_ = 0;
+  std::array<std::atomic<bool>, TaskCapacity> rate_released_{};
+  std::array<TaskStatistics, TaskCapacity> statistics_{};
+  NestedTiming timing_;
+  CoreLoad load_;
+};
+
+}  // namespace duet::rt
