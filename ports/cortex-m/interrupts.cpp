@@ -9,6 +9,7 @@ namespace {
 constexpr std::uintptr_t set_enable = 0xE000E100;
 constexpr std::uintptr_t clear_enable = 0xE000E180;
 constexpr std::uintptr_t set_pending = 0xE000E200;
+constexpr std::uintptr_t clear_pending = 0xE000E280;
 constexpr std::uintptr_t priority = 0xE000E400;
 
 volatile std::uint32_t& bank_word(std::uintptr_t bank, unsigned interrupt_number) {
@@ -31,6 +32,24 @@ void disable_interrupt(unsigned interrupt_number) {
 
 void set_interrupt_pending(unsigned interrupt_number) {
   bank_word(set_pending, interrupt_number) = bank_bit(interrupt_number);
+}
+
+void clear_interrupt_pending(unsigned interrupt_number) {
+  bank_word(clear_pending, interrupt_number) = bank_bit(interrupt_number);
+}
+
+bool interrupt_pending(unsigned interrupt_number) {
+  return (bank_word(set_pending, interrupt_number) & bank_bit(interrupt_number)) != 0;
+}
+
+void set_priority_grouping(unsigned sub_priority_bits) {
+  // AIRCR.PRIGROUP counts the sub-priority bits of the whole 8-bit field; the implemented bits are its top nibble,
+  // so 3 + sub_priority_bits. Writes need the key in the upper half.
+  constexpr std::uintptr_t application_interrupt_and_reset_control = 0xE000ED0C;
+  constexpr std::uint32_t key = 0x05FAU << 16;
+  const unsigned bits = sub_priority_bits < priority_bits ? sub_priority_bits : priority_bits - 1U;
+  volatile std::uint32_t& aircr = register32(application_interrupt_and_reset_control);
+  aircr = key | (aircr & ~(0xFFFFU << 16) & ~(0x7U << 8)) | ((8U - priority_bits + bits - 1U) << 8);
 }
 
 void set_interrupt_priority(unsigned interrupt_number, unsigned level) {

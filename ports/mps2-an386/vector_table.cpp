@@ -19,6 +19,18 @@ DUET_WEAK_INTERRUPT_HANDLER(UART2_TX_IRQHandler)
 DUET_WEAK_INTERRUPT_HANDLER(TIMER0_IRQHandler)
 DUET_WEAK_INTERRUPT_HANDLER(TIMER1_IRQHandler)
 DUET_WEAK_INTERRUPT_HANDLER(DUALTIMER_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART3_RX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART3_TX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART4_RX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(UART4_TX_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software0_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software1_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software2_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software3_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software4_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software5_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software6_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(Software7_IRQHandler)
 
 namespace {
 
@@ -36,6 +48,16 @@ constexpr auto device_interrupt_handlers = [] {
   handlers[board::timer0_interrupt] = TIMER0_IRQHandler;
   handlers[board::timer1_interrupt] = TIMER1_IRQHandler;
   handlers[board::dual_timer_interrupt] = DUALTIMER_IRQHandler;
+  handlers[board::uart3_receive_interrupt] = UART3_RX_IRQHandler;
+  handlers[board::uart3_transmit_interrupt] = UART3_TX_IRQHandler;
+  handlers[board::uart4_receive_interrupt] = UART4_RX_IRQHandler;
+  handlers[board::uart4_transmit_interrupt] = UART4_TX_IRQHandler;
+  constexpr std::array software = {Software0_IRQHandler, Software1_IRQHandler, Software2_IRQHandler,
+                                   Software3_IRQHandler, Software4_IRQHandler, Software5_IRQHandler,
+                                   Software6_IRQHandler, Software7_IRQHandler};
+  static_assert(software.size() == board::software_interrupt_count);
+  for (unsigned line = 0; line < software.size(); ++line)
+    handlers[board::first_software_interrupt + line] = software[line];
   return handlers;
 }();
 

@@ -59,9 +59,9 @@ void interrupt_body() { model_state.port->now += model_state.interrupt_cost; }
 void nothing() {}
 
 constexpr Task tasks[] = {
-    {.name = "base", .kind = TaskKind::periodic, .period_ticks = 1, .entry = base_step},
-    {.name = "every 2", .kind = TaskKind::periodic, .period_ticks = 2, .entry = slow_step},
-    {.name = "every 5", .kind = TaskKind::periodic, .period_ticks = 5, .entry = nothing},
+    {.name = "base", .kind = TaskKind::periodic, .period_ticks = 1, .priority = {1, 0}, .entry = base_step},
+    {.name = "every 2", .kind = TaskKind::periodic, .period_ticks = 2, .priority = {2, 0}, .entry = slow_step},
+    {.name = "every 5", .kind = TaskKind::periodic, .period_ticks = 5, .priority = {3, 0}, .entry = nothing},
     {.name = "uart", .kind = TaskKind::interrupt, .interrupt = 3, .priority = {1, 0}, .entry = interrupt_body},
 };
 
@@ -268,6 +268,24 @@ TEST(TaskTable, RejectsTablesTheExecutiveCannotRun) {
                                            {.name = "5", .period_ticks = 5, .entry = nothing}};
   model.tasks = rate_after_interrupt;
   EXPECT_EQ(check(model), TaskTableError::rates_not_fastest_first);
+
+  model.tasking_mode = TaskingMode::multi;
+  constexpr Task slow_as_urgent_as_fast[] = {{.name = "base", .priority = {2, 0}, .entry = nothing},
+                                             {.name = "5", .period_ticks = 5, .priority = {2, 0}, .entry = nothing}};
+  model.tasks = slow_as_urgent_as_fast;
+  EXPECT_EQ(check(model), TaskTableError::rates_not_rate_monotonic);
+  model.tasking_mode = TaskingMode::single;
+  EXPECT_EQ(check(model), TaskTableError::none);
+
+  constexpr Task sub_priority_without_bits[] = {{.name = "base", .priority = {0, 1}, .entry = nothing}};
+  model.tasks = sub_priority_without_bits;
+  EXPECT_EQ(check(model), TaskTableError::priority_out_of_range);
+  model.sub_priority_bits = 1;
+  EXPECT_EQ(check(model), TaskTableError::none);
+  constexpr Task group_beyond_three_bits[] = {{.name = "base", .priority = {8, 0}, .entry = nothing}};
+  model.tasks = group_beyond_three_bits;
+  EXPECT_EQ(check(model), TaskTableError::priority_out_of_range);
+  model.sub_priority_bits = 0;
 
   constexpr Task missing_entry[] = {{.name = "base"}};
   model.tasks = missing_entry;

@@ -18,7 +18,7 @@ TEST(FastToSlow, TheSlowTaskSeesTheValueOfItsReleaseTickForItsWholePeriod) {
   for (std::uint64_t tick = 0; tick < 9; ++tick) {
     const bool release = tick % slow_period == 0;
     transition.write(static_cast<int>(tick) * 10, release);  // the fast task, first
-    seen_by_slow.push_back(transition.read());              // the slow task, whenever it runs in its period
+    seen_by_slow.push_back(transition.read());               // the slow task, whenever it runs in its period
   }
   EXPECT_EQ(seen_by_slow, (std::vector<int>{0, 0, 0, 30, 30, 30, 60, 60, 60}));
 }
@@ -29,7 +29,7 @@ TEST(SlowToFast, TheFastTaskSeesTheLastCompletedSlowActivationHeldForAPeriod) {
   constexpr std::uint64_t slow_period = 2;
   for (std::uint64_t tick = 0; tick < 6; ++tick) {
     const bool release = tick % slow_period == 0;
-    seen_by_fast.push_back(transition.read(release));           // the fast task runs first at a release tick
+    seen_by_fast.push_back(transition.read(release));             // the fast task runs first at a release tick
     if (release) transition.write(static_cast<int>(tick) + 100);  // then the slow activation of this period
   }
   // One slow period of delay: the activation released at tick 0 is seen from tick 2 on.

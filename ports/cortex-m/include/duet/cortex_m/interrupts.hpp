@@ -19,10 +19,38 @@ inline constexpr unsigned max_interrupt_count = 496;
 void enable_interrupt(unsigned interrupt_number);
 void disable_interrupt(unsigned interrupt_number);
 void set_interrupt_pending(unsigned interrupt_number);
+void clear_interrupt_pending(unsigned interrupt_number);
+[[nodiscard]] bool interrupt_pending(unsigned interrupt_number);
 void set_interrupt_priority(unsigned interrupt_number, unsigned priority);
+
+// Splits the 4 priority bits into a group (preemption) priority and a sub-priority of `sub_priority_bits` (0-3) bits:
+// only a more urgent group preempts; among pending interrupts of one group the sub-priority, then the lower number,
+// decides which runs first. Call before enabling interrupts.
+void set_priority_grouping(unsigned sub_priority_bits);
+
+// The priority value of `group` and `sub` under the grouping set_priority_grouping(sub_priority_bits) chose.
+constexpr unsigned grouped_priority(unsigned group, unsigned sub, unsigned sub_priority_bits) {
+  return (group << sub_priority_bits) | (sub & ((1U << sub_priority_bits) - 1U));
+}
 
 inline void enable_interrupts() { asm volatile("cpsie i" ::: "memory"); }
 inline void disable_interrupts() { asm volatile("cpsid i" ::: "memory"); }
+
+// Masks every interrupt while it exists and restores the previous mask when it goes: nests, and works in handlers.
+// Keep what it guards short; it delays every interrupt.
+class InterruptMask {
+ public:
+  InterruptMask() {
+    asm volatile("mrs %0, primask" : "=r"(saved_primask_));
+    disable_interrupts();
+  }
+  ~InterruptMask() { asm volatile("msr primask, %0" ::"r"(saved_primask_) : "memory"); }
+  InterruptMask(const InterruptMask&) = delete;
+  InterruptMask& operator=(const InterruptMask&) = delete;
+
+ private:
+  std::uint32_t saved_primask_ = 0;
+};
 
 // The exception being handled: 0 in thread mode, 1-15 for system exceptions, 16 + n for device interrupt n.
 inline std::uint32_t active_exception() {

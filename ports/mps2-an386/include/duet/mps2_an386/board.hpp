@@ -24,9 +24,20 @@ inline constexpr unsigned uart1_receive_interrupt = 2;
 inline constexpr unsigned uart1_transmit_interrupt = 3;
 inline constexpr unsigned uart2_receive_interrupt = 4;
 inline constexpr unsigned uart2_transmit_interrupt = 5;
+inline constexpr unsigned uart_overflow_interrupt = 12;  // UARTs 0-2, ORed together
 inline constexpr unsigned timer0_interrupt = 8;
 inline constexpr unsigned timer1_interrupt = 9;
 inline constexpr unsigned dual_timer_interrupt = 10;
+inline constexpr unsigned ethernet_interrupt = 13;
+inline constexpr unsigned uart3_receive_interrupt = 18;
+inline constexpr unsigned uart3_transmit_interrupt = 19;
+inline constexpr unsigned uart4_receive_interrupt = 20;
+inline constexpr unsigned uart4_transmit_interrupt = 21;
+
+// Lines 40-47 are wired to nothing on this board: software pends them (set_interrupt_pending) to run work at an
+// interrupt priority, such as the executive's slower rates. Their handlers are Software0_IRQHandler and so on.
+inline constexpr unsigned first_software_interrupt = 40;
+inline constexpr unsigned software_interrupt_count = 8;
 
 // Brings up what the board hooks need (the console on UART0). Call first in main.
 void initialize();

@@ -11,7 +11,12 @@ class CmsdkTimer {
 
   // Interrupts every `period_cycles` peripheral clock cycles (at least 2), starting one period from now.
   void start_periodic_interrupt(std::uint32_t period_cycles) const;
+  // Counts down from 2^32 - 1 without interrupts, wrapping: a free-running clock of the peripheral clock.
+  void start_free_running() const;
   void stop() const;
+
+  // The counter: counts down by one per peripheral clock cycle.
+  [[nodiscard]] std::uint32_t value() const;
 
   // Acknowledges the interrupt; the handler must call it, or the interrupt is taken again at once. Interrupt-safe.
   void clear_interrupt() const;

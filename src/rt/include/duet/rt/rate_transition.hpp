@@ -1,9 +1,9 @@
 #pragma once
 // Rate transitions: how a value crosses from one task to another that runs at a different rate or from an interrupt.
 //
-// Between periodic rates the transfer is deterministic, as in Simulink's "ensure deterministic data transfer": the value
-// changes hands only at the slower rate's release ticks, so what a task sees does not depend on how long the other
-// one ran. Between an interrupt task and anything else there is no common time base; AsyncTransfer hands over the
+// Between periodic rates the transfer is deterministic, as in Simulink's "ensure deterministic data transfer": the
+// value changes hands only at the slower rate's release ticks, so what a task sees does not depend on how long the
+// other one ran. Between an interrupt task and anything else there is no common time base; AsyncTransfer hands over the
 // latest whole value without locks and without ever tearing it.
 
 #include <array>

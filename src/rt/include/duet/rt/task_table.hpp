@@ -25,8 +25,10 @@ struct Task {
   TaskKind kind = TaskKind::periodic;
   std::uint32_t period_ticks = 1;  // periodic: the period in base ticks (1 for the base rate)
   std::uint16_t interrupt = 0;     // interrupt: the board's interrupt number that triggers the task
-  InterruptPriority priority;      // interrupt tasks; periodic rates get theirs from the tasking mode
-  void (*entry)() = nullptr;       // the rate's step, or the interrupt task's body
+  // The priority of the task's interrupt: for the base rate the timer's, for a slower rate in multitasking mode its
+  // software interrupt's (less urgent than every faster rate), for an interrupt task its trigger's.
+  InterruptPriority priority;
+  void (*entry)() = nullptr;  // the rate's step, or the interrupt task's body
 };
 
 enum class TaskingMode : std::uint8_t {
@@ -50,6 +52,8 @@ struct ModelDescription {
   OverrunPolicy overrun_policy = OverrunPolicy::count_and_skip;
   std::uint64_t final_tick = 0;  // stop after this many base ticks; 0 runs until a stop request
   bool wait_for_start = false;   // wait for a start request (external mode) before the first tick
+  // How many of the 4 NVIC priority bits are sub-priority (the rest are the group that preempts): 0 to 3.
+  std::uint8_t sub_priority_bits = 0;
 };
 
 enum class TaskTableError : std::uint8_t {
@@ -61,6 +65,8 @@ enum class TaskTableError : std::uint8_t {
   rates_not_fastest_first,  // periodic tasks out of order, or after an interrupt task
   zero_period,
   base_period_zero,
+  priority_out_of_range,     // a group or sub-priority does not fit the bits the grouping gives it
+  rates_not_rate_monotonic,  // multitasking: a slower rate is not less urgent than the rate before it
 };
 
 // Checks the rules above; usable in a static_assert on a constexpr table.
@@ -70,17 +76,28 @@ constexpr TaskTableError check(const ModelDescription& model) {
   if (model.initialize == nullptr || model.terminate == nullptr) return TaskTableError::missing_entry;
   const Task& base = model.tasks.front();
   if (base.kind != TaskKind::periodic || base.period_ticks != 1) return TaskTableError::no_base_rate;
-  std::uint32_t previous_period = 1;
+  constexpr unsigned nvic_priority_bits = 4;
+  if (model.sub_priority_bits >= nvic_priority_bits) return TaskTableError::priority_out_of_range;
+  const unsigned group_levels = 1U << (nvic_priority_bits - model.sub_priority_bits);
+  const unsigned sub_levels = 1U << model.sub_priority_bits;
   bool seen_interrupt_task = false;
-  for (const Task& task : model.tasks) {
+  for (std::size_t index = 0; index < model.tasks.size(); ++index) {
+    const Task& task = model.tasks[index];
     if (task.entry == nullptr) return TaskTableError::missing_entry;
+    if (task.priority.group >= group_levels || task.priority.sub >= sub_levels) {
+      return TaskTableError::priority_out_of_range;
+    }
     if (task.kind == TaskKind::interrupt) {
       seen_interrupt_task = true;
       continue;
     }
     if (task.period_ticks == 0) return TaskTableError::zero_period;
-    if (seen_interrupt_task || task.period_ticks < previous_period) return TaskTableError::rates_not_fastest_first;
-    previous_period = task.period_ticks;
+    if (index == 0) continue;
+    const Task& faster = model.tasks[index - 1];
+    if (seen_interrupt_task || task.period_ticks < faster.period_ticks) return TaskTableError::rates_not_fastest_first;
+    if (model.tasking_mode == TaskingMode::multi && task.priority.group <= faster.priority.group) {
+      return TaskTableError::rates_not_rate_monotonic;
+    }
   }
   return TaskTableError::none;
 }

@@ -1,0 +1,63 @@
+#pragma once
+// The executive's port on mps2-an386 (see duet/rt/executive.hpp): timer0 interrupts at the base rate, timer1 runs
+// free as the cycle counter (25 MHz, the core clock), and in multitasking mode the slower rate r runs from the
+// software interrupt line first_software_interrupt + r.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "duet/cortex_m/interrupts.hpp"
+#include "duet/mps2_an386/board.hpp"
+#include "duet/mps2_an386/cmsdk_timer.hpp"
+#include "duet/rt/task_table.hpp"
+
+namespace duet::mps2_an386 {
+
+class ExecutivePort {
+ public:
+  using CriticalSection = cortex_m::InterruptMask;
+
+  // The interrupt line that runs slower rate `rate` (1 or more) in multitasking mode.
+  static constexpr unsigned rate_interrupt(std::size_t rate) {
+    return first_software_interrupt + static_cast<unsigned>(rate);
+  }
+  static constexpr std::size_t max_rates = software_interrupt_count;
+
+  // Starts the cycle counter, sets the priority grouping and the priority of every task's interrupt from the model's
+  // table, and enables the interrupts of its rates and interrupt tasks. Call before Executive::run().
+  static void configure(const rt::ModelDescription& model);
+
+  [[nodiscard]] std::uint32_t cycles() const { return ~cycle_counter.value(); }  // it counts down
+  void start_base_timer(std::uint32_t period_ns);
+  void stop_base_timer();
+  [[nodiscard]] bool base_tick_pending() const { return cortex_m::interrupt_pending(timer0_interrupt); }
+  void skip_base_tick();
+  void trigger_rate(std::size_t rate) { cortex_m::set_interrupt_pending(rate_interrupt(rate)); }
+  // Spins: under QEMU's -icount, sleeping in WFI merges timer interrupts.
+  void idle() {}
+
+  // The base timer handler's first act: the timer keeps its interrupt raised until it is acknowledged.
+  static void acknowledge_base_tick() { base_timer.clear_interrupt(); }
+
+ private:
+  static constexpr CmsdkTimer base_timer{timer0_base};
+  static constexpr CmsdkTimer cycle_counter{timer1_base};
+};
+
+}  // namespace duet::mps2_an386
+
+// Defines the interrupt handlers that connect `executive` (an Executive<ExecutivePort, N> with static storage) to the
+// base timer and to the software interrupts of the slower rates. Interrupt tasks' handlers are the application's:
+// each calls executive.on_interrupt_task(index).
+#define DUET_MPS2_AN386_EXECUTIVE_HANDLERS(executive)                          \
+  extern "C" void TIMER0_IRQHandler() {                                        \
+    ::duet::mps2_an386::ExecutivePort::acknowledge_base_tick();                \
+    (executive).on_base_tick();                                                \
+  }                                                                            \
+  extern "C" void Software1_IRQHandler() { (executive).on_rate_interrupt(1); } \
+  extern "C" void Software2_IRQHandler() { (executive).on_rate_interrupt(2); } \
+  extern "C" void Software3_IRQHandler() { (executive).on_rate_interrupt(3); } \
+  extern "C" void Software4_IRQHandler() { (executive).on_rate_interrupt(4); } \
+  extern "C" void Software5_IRQHandler() { (executive).on_rate_interrupt(5); } \
+  extern "C" void Software6_IRQHandler() { (executive).on_rate_interrupt(6); } \
+  extern "C" void Software7_IRQHandler() { (executive).on_rate_interrupt(7); }
