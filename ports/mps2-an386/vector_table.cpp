@@ -1,4 +1,4 @@
-// The vector table of mps2-an386: 48 device interrupts. Interrupts with a name here can be handled by defining a
+// The vector table of mps2-an386: 32 device interrupts. Interrupts with a name here can be handled by defining a
 // function of that name; the others report themselves as unhandled.
 
 #include "duet/cortex_m/vector_table.hpp"

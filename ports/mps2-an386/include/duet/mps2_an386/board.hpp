@@ -8,7 +8,9 @@ namespace duet::mps2_an386 {
 
 inline constexpr std::uint32_t core_clock_hz = 25'000'000;
 inline constexpr std::uint32_t peripheral_clock_hz = 25'000'000;
-inline constexpr unsigned device_interrupt_count = 48;
+// QEMU's NVIC for this board implements 32 device interrupts (its "num-irq" property); the enable and pending bits of
+// higher lines read as zero, so nothing there can ever run.
+inline constexpr unsigned device_interrupt_count = 32;
 
 // CMSDK APB peripherals.
 inline constexpr std::uintptr_t timer0_base = 0x4000'0000;
@@ -34,9 +36,9 @@ inline constexpr unsigned uart3_transmit_interrupt = 19;
 inline constexpr unsigned uart4_receive_interrupt = 20;
 inline constexpr unsigned uart4_transmit_interrupt = 21;
 
-// Lines 40-47 are wired to nothing on this board: software pends them (set_interrupt_pending) to run work at an
+// Lines 24-31 are wired to nothing on this board: software pends them (set_interrupt_pending) to run work at an
 // interrupt priority, such as the executive's slower rates. Their handlers are Software0_IRQHandler and so on.
-inline constexpr unsigned first_software_interrupt = 40;
+inline constexpr unsigned first_software_interrupt = 24;
 inline constexpr unsigned software_interrupt_count = 8;
 
 // Brings up what the board hooks need (the console on UART0). Call first in main.
