@@ -7,10 +7,11 @@ constexpr std::uint32_t nanoseconds_per_second = 1'000'000'000;
 
 }  // namespace
 
-void ExecutivePort::configure(const rt::ModelDescription& model) {
+bool ExecutivePort::configure(const rt::ModelDescription& model) {
+  const std::size_t rates = rt::rate_count(model);
+  if (rates > max_rates) return false;
   cycle_counter.start_free_running();
   cortex_m::set_priority_grouping(model.sub_priority_bits);
-  const std::size_t rates = rt::rate_count(model);
   for (std::size_t index = 0; index < model.tasks.size(); ++index) {
     const rt::Task& task = model.tasks[index];
     const unsigned line = index == 0 ? timer0_interrupt : index < rates ? rate_interrupt(index) : task.interrupt;
@@ -18,6 +19,7 @@ void ExecutivePort::configure(const rt::ModelDescription& model) {
         line, cortex_m::grouped_priority(task.priority.group, task.priority.sub, model.sub_priority_bits));
     cortex_m::enable_interrupt(line);
   }
+  return true;
 }
 
 void ExecutivePort::start_base_timer(std::uint32_t period_ns) {

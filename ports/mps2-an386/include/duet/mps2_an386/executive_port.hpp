@@ -21,11 +21,13 @@ class ExecutivePort {
   static constexpr unsigned rate_interrupt(std::size_t rate) {
     return first_software_interrupt + static_cast<unsigned>(rate);
   }
-  static constexpr std::size_t max_rates = software_interrupt_count;
+  // Rates 1-4 use software interrupts 1-4; 0 and 5-7 are the application's.
+  static constexpr std::size_t max_rates = 5;
 
   // Starts the cycle counter, sets the priority grouping and the priority of every task's interrupt from the model's
-  // table, and enables the interrupts of its rates and interrupt tasks. Call before Executive::run().
-  static void configure(const rt::ModelDescription& model);
+  // table, and enables the interrupts of its rates and interrupt tasks. Call before Executive::run(). False, with
+  // nothing enabled, if the model has more rates than there are software interrupts for them.
+  [[nodiscard]] static bool configure(const rt::ModelDescription& model);
 
   [[nodiscard]] std::uint32_t cycles() const { return ~cycle_counter.value(); }  // it counts down
   void start_base_timer(std::uint32_t period_ns);
@@ -47,8 +49,8 @@ class ExecutivePort {
 }  // namespace duet::mps2_an386
 
 // Defines the interrupt handlers that connect `executive` (an Executive<ExecutivePort, N> with static storage) to the
-// base timer and to the software interrupts of the slower rates. Interrupt tasks' handlers are the application's:
-// each calls executive.on_interrupt_task(index).
+// base timer and to the software interrupts of the slower rates (Software1 to Software4). Interrupt tasks' handlers are
+// the application's: each calls executive.on_interrupt_task(index).
 #define DUET_MPS2_AN386_EXECUTIVE_HANDLERS(executive)                          \
   extern "C" void TIMER0_IRQHandler() {                                        \
     ::duet::mps2_an386::ExecutivePort::acknowledge_base_tick();                \
@@ -57,7 +59,4 @@ class ExecutivePort {
   extern "C" void Software1_IRQHandler() { (executive).on_rate_interrupt(1); } \
   extern "C" void Software2_IRQHandler() { (executive).on_rate_interrupt(2); } \
   extern "C" void Software3_IRQHandler() { (executive).on_rate_interrupt(3); } \
-  extern "C" void Software4_IRQHandler() { (executive).on_rate_interrupt(4); } \
-  extern "C" void Software5_IRQHandler() { (executive).on_rate_interrupt(5); } \
-  extern "C" void Software6_IRQHandler() { (executive).on_rate_interrupt(6); } \
-  extern "C" void Software7_IRQHandler() { (executive).on_rate_interrupt(7); }
+  extern "C" void Software4_IRQHandler() { (executive).on_rate_interrupt(4); }
