@@ -15,6 +15,7 @@ inline constexpr unsigned device_interrupt_count = 32;
 // CMSDK APB peripherals.
 inline constexpr std::uintptr_t timer0_base = 0x4000'0000;
 inline constexpr std::uintptr_t timer1_base = 0x4000'1000;
+inline constexpr std::uintptr_t dual_timer_base = 0x4000'2000;
 inline constexpr std::uintptr_t uart0_base = 0x4000'4000;
 inline constexpr std::uintptr_t uart1_base = 0x4000'5000;
 inline constexpr std::uintptr_t uart2_base = 0x4000'6000;
