@@ -1,0 +1,67 @@
+#pragma once
+// The executive's port for simulation and tests on the PC: time moves only when the caller advances it, so every run
+// is the same. Each task has an interrupt line of its own in a SimulatedInterruptController (line = task index): the
+// base timer, the slower rates' software interrupts, and the interrupt tasks, which the caller raises. Handlers run on
+// the caller's thread in the NVIC's order; a task pended from inside a less urgent one preempts it there.
+//
+// Time is virtual: one cycle is one nanosecond, and a task takes no time unless it advances the clock itself.
+
+#include <cstddef>
+#include <cstdint>
+
+#include "duet/host/simulated_interrupt_controller.hpp"
+#include "duet/rt/task_table.hpp"
+
+namespace duet::host {
+
+class LockStepPort {
+ public:
+  struct CriticalSection {};  // one thread runs every handler: nothing to mask
+
+  explicit LockStepPort(const rt::ModelDescription& model);
+
+  // Connects every task's line to `executive` (an rt::Executive on this port).
+  template <typename Executive>
+  void attach(Executive& executive);
+
+  // Advances virtual time by `ticks` base periods, running the base tick and whatever it triggers at each.
+  void advance(std::uint64_t ticks = 1);
+  // An interrupt task's trigger fires now (its index in the task table).
+  void raise(std::size_t task) { interrupts_.pend(task); }
+  // Adds time spent inside a task, for models that simulate their execution time.
+  void spend(std::uint64_t nanoseconds) { now_ns_ += nanoseconds; }
+  [[nodiscard]] std::uint64_t now_ns() const { return now_ns_; }
+
+  // ExecutivePort.
+  [[nodiscard]] std::uint32_t cycles() const { return static_cast<std::uint32_t>(now_ns_); }
+  void start_base_timer(std::uint32_t period_ns) { period_ns_ = period_ns; }
+  void stop_base_timer() { period_ns_ = 0; }
+  [[nodiscard]] bool base_tick_pending() const { return false; }  // a tick never arrives during a step
+  void skip_base_tick() {}
+  void trigger_rate(std::size_t rate) { interrupts_.pend(rate); }
+  void idle() { advance(); }  // so that Executive::run() runs the model as fast as the PC can
+
+ private:
+  const rt::ModelDescription& model_;
+  SimulatedInterruptController interrupts_;
+  std::uint64_t now_ns_ = 0;
+  std::uint32_t period_ns_ = 0;
+};
+
+template <typename Executive>
+void LockStepPort::attach(Executive& executive) {
+  const std::size_t rates = rt::rate_count(model_);
+  for (std::size_t task = 0; task < model_.tasks.size(); ++task) {
+    const rt::InterruptPriority priority = model_.tasks[task].priority;
+    const SimulatedInterruptController::Priority line_priority{priority.group, priority.sub};
+    if (task == 0) {
+      interrupts_.connect(task, line_priority, [&executive] { executive.on_base_tick(); });
+    } else if (task < rates) {
+      interrupts_.connect(task, line_priority, [&executive, task] { executive.on_rate_interrupt(task); });
+    } else {
+      interrupts_.connect(task, line_priority, [&executive, task] { executive.on_interrupt_task(task); });
+    }
+  }
+}
+
+}  // namespace duet::host
