@@ -10,6 +10,7 @@
 #include <cstdint>
 
 #include "duet/host/simulated_interrupt_controller.hpp"
+#include "duet/host/task_lines.hpp"
 #include "duet/rt/task_table.hpp"
 
 namespace duet::host {
@@ -50,18 +51,7 @@ class LockStepPort {
 
 template <typename Executive>
 void LockStepPort::attach(Executive& executive) {
-  const std::size_t rates = rt::rate_count(model_);
-  for (std::size_t task = 0; task < model_.tasks.size(); ++task) {
-    const rt::InterruptPriority priority = model_.tasks[task].priority;
-    const SimulatedInterruptController::Priority line_priority{priority.group, priority.sub};
-    if (task == 0) {
-      interrupts_.connect(task, line_priority, [&executive] { executive.on_base_tick(); });
-    } else if (task < rates) {
-      interrupts_.connect(task, line_priority, [&executive, task] { executive.on_rate_interrupt(task); });
-    } else {
-      interrupts_.connect(task, line_priority, [&executive, task] { executive.on_interrupt_task(task); });
-    }
-  }
+  connect_task_lines(interrupts_, model_, executive);
 }
 
 }  // namespace duet::host
