@@ -38,10 +38,6 @@ void clear_interrupt_pending(unsigned interrupt_number) {
   bank_word(clear_pending, interrupt_number) = bank_bit(interrupt_number);
 }
 
-bool interrupt_pending(unsigned interrupt_number) {
-  return (bank_word(set_pending, interrupt_number) & bank_bit(interrupt_number)) != 0;
-}
-
 void set_priority_grouping(unsigned sub_priority_bits) {
   // AIRCR.PRIGROUP counts the sub-priority bits of the whole 8-bit field; the implemented bits are its top nibble,
   // so 3 + sub_priority_bits. Writes need the key in the upper half.

@@ -9,7 +9,7 @@ using cortex_m::register32;
 
 // Register offsets and bits (Arm CoreLink CMSDK, APB timer).
 constexpr std::uintptr_t control = 0x0;
-constexpr std::uintptr_t current_value = 0x4;
+constexpr std::uintptr_t current_value = 0x4;  // also value_offset in the header
 constexpr std::uintptr_t reload = 0x8;
 constexpr std::uintptr_t interrupt_clear = 0xC;
 constexpr std::uint32_t enable = 1U << 0;
@@ -33,10 +33,6 @@ void CmsdkTimer::start_free_running() const {
   register32(base_ + control) = enable;
 }
 
-std::uint32_t CmsdkTimer::value() const { return register32(base_ + current_value); }
-
 void CmsdkTimer::stop() const { register32(base_ + control) = 0; }
-
-void CmsdkTimer::clear_interrupt() const { register32(base_ + interrupt_clear) = 1; }
 
 }  // namespace duet::mps2_an386

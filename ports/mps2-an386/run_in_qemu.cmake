@@ -1,12 +1,15 @@
 # Boots a firmware image on QEMU's mps2-an386 in deterministic time (-icount) and checks what it did.
 #
 #   cmake -DQEMU=qemu-system-arm -DIMAGE=<elf> [-DEXPECTED_OUTPUT=<file>] [-DEXPECTED_EXIT_CODE=<n>]
-#         [-DTIMEOUT=<seconds>] -P run_in_qemu.cmake
+#         [-DTIMEOUT=<seconds>] [-DICOUNT_SHIFT=<n>] -P run_in_qemu.cmake
 #
 # Fails unless QEMU exits within TIMEOUT seconds (default 20) with EXPECTED_EXIT_CODE (default 0) and, if
 # EXPECTED_OUTPUT is given, the console output (UART0) equals that file byte for byte.
 if(NOT DEFINED TIMEOUT)
   set(TIMEOUT 20)
+endif()
+if(NOT DEFINED ICOUNT_SHIFT)
+  set(ICOUNT_SHIFT 3)
 endif()
 if(NOT DEFINED EXPECTED_EXIT_CODE)
   set(EXPECTED_EXIT_CODE 0)
@@ -18,11 +21,11 @@ function(fail diagnosis)
   message(FATAL_ERROR "${IMAGE} failed its check")
 endfunction()
 
-# shift=3: one guest instruction is 8 ns of virtual time. align=off and sleep=off decouple virtual time from the
+# shift=N: one guest instruction is 2^N ns of virtual time (3 by default). align=off and sleep=off decouple virtual time from the
 # host's clock, so every run executes the same instructions and sees the same interrupts.
 execute_process(
   COMMAND ${QEMU} -machine mps2-an386 -nographic -monitor none -serial stdio
-          -semihosting-config enable=on,target=native -icount shift=3,align=off,sleep=off -kernel ${IMAGE}
+          -semihosting-config enable=on,target=native -icount shift=${ICOUNT_SHIFT},align=off,sleep=off -kernel ${IMAGE}
   INPUT_FILE /dev/null
   OUTPUT_VARIABLE output
   ERROR_VARIABLE errors

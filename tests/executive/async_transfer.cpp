@@ -1,6 +1,6 @@
 // An interrupt task writes 32-word samples through AsyncTransfer while the base rate, which it preempts, reads them
-// slowly, word by word: no sample may arrive torn. The same traffic through a plain shared variable tears, which shows
-// that the test would notice.
+// slowly, word by word: no sample may arrive torn. The same traffic through a plain shared variable tears (about 300
+// of 500 samples), which shows that the test would notice.
 
 #include <array>
 #include <cstdint>
@@ -88,9 +88,12 @@ constexpr duet::rt::ModelDescription model{.name = "async transfer",
 
 duet::rt::Executive<duet::tests::TracedPort, 2> executive{model, port};
 
+// How many samples tear through the plain variable depends on how long the code takes, so the report only says
+// whether any did; the count through AsyncTransfer must be exactly zero.
 void print_tally(std::string_view name, const Tally& tally) {
   duet::TextBuffer<128> line;
-  line.append(name).append(": ").append(tally.reads).append(" reads, ").append(tally.torn).append(" torn, ");
+  line.append(name).append(": ").append(tally.reads).append(" reads, ");
+  line.append(tally.torn == 0 ? "none" : "some").append(" torn, ");
   line.append(tally.went_back).append(" older than the one before\n");
   duet::cortex_m::console_write(line.view());
 }

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+#include "duet/cortex_m/registers.hpp"
+
 namespace duet::cortex_m {
 
 // Priorities are 0 (most urgent) to 15. The STM32MP15 implements 4 priority bits and QEMU's mps2-an386 8, so duet
@@ -20,7 +22,10 @@ void enable_interrupt(unsigned interrupt_number);
 void disable_interrupt(unsigned interrupt_number);
 void set_interrupt_pending(unsigned interrupt_number);
 void clear_interrupt_pending(unsigned interrupt_number);
-[[nodiscard]] bool interrupt_pending(unsigned interrupt_number);
+[[nodiscard]] inline bool interrupt_pending(unsigned interrupt_number) {  // inline: the executive asks on every tick
+  constexpr std::uintptr_t set_pending_bank = 0xE000E200;
+  return (register32(set_pending_bank + 4U * (interrupt_number / 32U)) & (1U << (interrupt_number % 32U))) != 0;
+}
 void set_interrupt_priority(unsigned interrupt_number, unsigned priority);
 
 // Splits the 4 priority bits into a group (preemption) priority and a sub-priority of `sub_priority_bits` (0-3) bits:

@@ -3,6 +3,8 @@
 
 #include <cstdint>
 
+#include "duet/cortex_m/registers.hpp"
+
 namespace duet::mps2_an386 {
 
 class CmsdkTimer {
@@ -16,12 +18,15 @@ class CmsdkTimer {
   void stop() const;
 
   // The counter: counts down by one per peripheral clock cycle.
-  [[nodiscard]] std::uint32_t value() const;
+  [[nodiscard]] std::uint32_t value() const { return cortex_m::register32(base_ + value_offset); }
 
   // Acknowledges the interrupt; the handler must call it, or the interrupt is taken again at once. Interrupt-safe.
-  void clear_interrupt() const;
+  void clear_interrupt() const { cortex_m::register32(base_ + interrupt_clear_offset) = 1; }
 
  private:
+  // Inline here because the executive reads and acknowledges them on every tick.
+  static constexpr std::uintptr_t value_offset = 0x4;
+  static constexpr std::uintptr_t interrupt_clear_offset = 0xC;
   std::uintptr_t base_;
 };
 

@@ -104,7 +104,7 @@ class Executive {
   // The base timer's interrupt handler. Single-tasking runs every due rate here, fastest first; multitasking runs
   // the base rate and triggers the software interrupt of each due slower rate.
   void on_base_tick() {
-    if (state_ != ExecutiveState::running) return;
+    if (state_.load(std::memory_order_relaxed) != ExecutiveState::running) return;
     const std::uint32_t now = port_.cycles();
     if (ticks_ != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
     previous_tick_cycles_ = now;
@@ -120,7 +120,7 @@ class Executive {
         port_.trigger_rate(rate);
       }
     }
-    ++ticks_;
+    advance_tick();
 
     if (port_.base_tick_pending()) overrun(0);
     if (model_.final_tick != 0 && ticks_ >= model_.final_tick) request_stop(StopReason::final_tick);
@@ -128,13 +128,13 @@ class Executive {
 
   // Multitasking: the software interrupt of a slower rate.
   void on_rate_interrupt(std::size_t rate) {
-    if (state_ == ExecutiveState::running) run_measured(rate);
+    if (state_.load(std::memory_order_relaxed) == ExecutiveState::running) run_measured(rate);
     rate_released_[rate] = false;
   }
 
   // The interrupt handler of an interrupt-triggered task (its index in the task table).
   void on_interrupt_task(std::size_t task) {
-    if (state_ == ExecutiveState::running) run_measured(task);
+    if (state_.load(std::memory_order_relaxed) == ExecutiveState::running) run_measured(task);
   }
 
   // True while the base tick `ticks()` releases `rate`: what deterministic rate transitions ask in the faster task.
@@ -170,7 +170,16 @@ class Executive {
       request_stop(StopReason::overrun);
     } else if (task == 0) {
       port_.skip_base_tick();
-      ++ticks_;  // the tick happened; its activations are dropped
+      advance_tick();  // the tick happened; its activations are dropped
+    }
+  }
+
+  // Counts down to each rate's next release rather than dividing the 64-bit tick count on every tick.
+  void advance_tick() {
+    ++ticks_;
+    for (std::size_t rate = 1; rate < rates_; ++rate) {
+      std::uint32_t& countdown = ticks_until_release_[rate];
+      countdown = countdown == 0 ? model_.tasks[rate].period_ticks - 1U : countdown - 1U;
     }
   }
 
@@ -181,6 +190,7 @@ class Executive {
   StopReason stop_reason_ = StopReason::none;
   std::uint64_t ticks_ = 0;
   std::uint32_t previous_tick_cycles_ = 0;
+  std::array<std::uint32_t, TaskCapacity> ticks_until_release_{};  // 0: the current tick releases the rate
   std::array<std::atomic<bool>, TaskCapacity> rate_released_{};
   std::array<TaskStatistics, TaskCapacity> statistics_{};
   NestedTiming timing_;

@@ -1,0 +1,44 @@
+#include "tick_overhead.hpp"
+
+namespace duet::bench {
+
+CountingExecutive* running_executive = nullptr;
+
+namespace {
+void nothing() {}
+}  // namespace
+
+std::uint32_t idle_rounds_of(const rt::ModelDescription& model) {
+  CountingPort port;
+  CountingExecutive executive{model, port};
+  if (!CountingPort::configure(model) || executive.initialize() != rt::TaskTableError::none) return 0;
+  running_executive = &executive;
+  executive.run();
+  executive.terminate();
+  running_executive = nullptr;
+  return port.idle_rounds;
+}
+
+std::uint64_t hundredths_of_instructions_per_tick(std::uint32_t period_ns, std::uint32_t ticks, void (*step)()) {
+  const rt::Task many[] = {{.name = "base", .priority = {1, 0}, .entry = step}};
+  const rt::ModelDescription many_ticks{.name = "many ticks",
+                                        .base_period_ns = period_ns,
+                                        .tasks = many,
+                                        .initialize = nothing,
+                                        .terminate = nothing,
+                                        .final_tick = ticks};
+  const rt::ModelDescription one_tick{.name = "one tick",
+                                      .base_period_ns = period_ns * ticks,
+                                      .tasks = many,
+                                      .initialize = nothing,
+                                      .terminate = nothing,
+                                      .final_tick = 1};
+  const std::uint64_t busy_rounds = idle_rounds_of(many_ticks);
+  const std::uint64_t idle_rounds = idle_rounds_of(one_tick);
+  if (idle_rounds <= busy_rounds) return 0;
+  const std::uint64_t instructions = static_cast<std::uint64_t>(period_ns) * ticks;
+  // lost rounds * (instructions per round) / (ticks - 1): the single tick of the second run costs one tick too.
+  return (idle_rounds - busy_rounds) * instructions * 100U / idle_rounds / (ticks - 1U);
+}
+
+}  // namespace duet::bench
