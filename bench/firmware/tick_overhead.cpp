@@ -19,7 +19,8 @@ std::uint32_t idle_rounds_of(const rt::ModelDescription& model) {
   return port.idle_rounds;
 }
 
-std::uint64_t hundredths_of_instructions_per_tick(std::uint32_t period_ns, std::uint32_t ticks, void (*step)()) {
+std::uint64_t hundredths_of_instructions_per_tick(std::uint32_t period_ns, std::uint32_t ticks, void (*step)(),
+                                                  unsigned icount_shift) {
   const rt::Task many[] = {{.name = "base", .priority = {1, 0}, .entry = step}};
   const rt::ModelDescription many_ticks{.name = "many ticks",
                                         .base_period_ns = period_ns,
@@ -36,7 +37,7 @@ std::uint64_t hundredths_of_instructions_per_tick(std::uint32_t period_ns, std::
   const std::uint64_t busy_rounds = idle_rounds_of(many_ticks);
   const std::uint64_t idle_rounds = idle_rounds_of(one_tick);
   if (idle_rounds <= busy_rounds) return 0;
-  const std::uint64_t instructions = static_cast<std::uint64_t>(period_ns) * ticks;
+  const std::uint64_t instructions = (static_cast<std::uint64_t>(period_ns) * ticks) >> icount_shift;
   // lost rounds * (instructions per round) / (ticks - 1): the single tick of the second run costs one tick too.
   return (idle_rounds - busy_rounds) * instructions * 100U / idle_rounds / (ticks - 1U);
 }
