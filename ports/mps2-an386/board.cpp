@@ -17,6 +17,8 @@ constexpr std::uint32_t console_baud_rate = 115'200;
 
 void initialize() { console.enable_transmitter(peripheral_clock_hz, console_baud_rate); }
 
+const CmsdkUart& console_uart() { return console; }
+
 }  // namespace duet::mps2_an386
 
 namespace duet::cortex_m {

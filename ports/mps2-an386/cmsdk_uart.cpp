@@ -12,8 +12,13 @@ constexpr std::uintptr_t data = 0x00;
 constexpr std::uintptr_t state = 0x04;
 constexpr std::uintptr_t control = 0x08;
 constexpr std::uintptr_t baud_divider = 0x10;
+constexpr std::uintptr_t interrupt_status_and_clear = 0x0C;
 constexpr std::uint32_t transmit_buffer_full = 1U << 0;
+constexpr std::uint32_t receive_buffer_full = 1U << 1;
 constexpr std::uint32_t transmit_enable = 1U << 0;
+constexpr std::uint32_t receive_enable = 1U << 1;
+constexpr std::uint32_t receive_interrupt_enable = 1U << 3;
+constexpr std::uint32_t receive_interrupt = 1U << 1;
 constexpr std::uint32_t smallest_baud_divider = 16;  // the UART rejects smaller dividers
 
 }  // namespace
@@ -30,6 +35,17 @@ void CmsdkUart::write(std::string_view text) const {
     }
     register32(base_ + data) = static_cast<unsigned char>(character);
   }
+}
+
+void CmsdkUart::enable_receive_interrupt() const {
+  register32(base_ + control) = register32(base_ + control) | receive_enable | receive_interrupt_enable;
+}
+
+bool CmsdkUart::read(char& byte) const {
+  register32(base_ + interrupt_status_and_clear) = receive_interrupt;
+  if ((register32(base_ + state) & receive_buffer_full) == 0) return false;
+  byte = static_cast<char>(register32(base_ + data) & 0xFFU);
+  return true;
 }
 
 }  // namespace duet::mps2_an386

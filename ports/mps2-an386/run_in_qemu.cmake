@@ -1,12 +1,16 @@
 # Boots a firmware image on QEMU's mps2-an386 in deterministic time (-icount) and checks what it did.
 #
 #   cmake -DQEMU=qemu-system-arm -DIMAGE=<elf> [-DEXPECTED_OUTPUT=<file>] [-DEXPECTED_EXIT_CODE=<n>]
-#         [-DTIMEOUT=<seconds>] [-DICOUNT_SHIFT=<n>] -P run_in_qemu.cmake
+#         [-DTIMEOUT=<seconds>] [-DICOUNT_SHIFT=<n>] [-DINPUT=<file>] -P run_in_qemu.cmake
 #
 # Fails unless QEMU exits within TIMEOUT seconds (default 20) with EXPECTED_EXIT_CODE (default 0) and, if
-# EXPECTED_OUTPUT is given, the console output (UART0) equals that file byte for byte.
+# EXPECTED_OUTPUT is given, the console output (UART0) equals that file byte for byte. INPUT (default: nothing) is
+# what the firmware receives on UART0.
 if(NOT DEFINED TIMEOUT)
   set(TIMEOUT 20)
+endif()
+if(NOT DEFINED INPUT)
+  set(INPUT /dev/null)
 endif()
 if(NOT DEFINED ICOUNT_SHIFT)
   set(ICOUNT_SHIFT 3)
@@ -26,7 +30,7 @@ endfunction()
 execute_process(
   COMMAND ${QEMU} -machine mps2-an386 -nographic -monitor none -serial stdio
           -semihosting-config enable=on,target=native -icount shift=${ICOUNT_SHIFT},align=off,sleep=off -kernel ${IMAGE}
-  INPUT_FILE /dev/null
+  INPUT_FILE ${INPUT}
   OUTPUT_VARIABLE output
   ERROR_VARIABLE errors
   RESULT_VARIABLE exit_code

@@ -45,4 +45,8 @@ inline constexpr unsigned software_interrupt_count = 8;
 // Brings up what the board hooks need (the console on UART0). Call first in main.
 void initialize();
 
+// The console's UART (UART0, QEMU's first -serial), for applications that also read from it.
+class CmsdkUart;
+const CmsdkUart& console_uart();
+
 }  // namespace duet::mps2_an386

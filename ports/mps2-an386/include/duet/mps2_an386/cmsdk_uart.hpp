@@ -16,6 +16,11 @@ class CmsdkUart {
   // Writes every byte of `text`, waiting while the transmit buffer is full. Blocks: not for interrupt handlers.
   void write(std::string_view text) const;
 
+  // Enables the receiver and its interrupt, raised when a byte has arrived.
+  void enable_receive_interrupt() const;
+  // The received byte, if one is waiting; acknowledges the receive interrupt. Interrupt-safe, never waits.
+  [[nodiscard]] bool read(char& byte) const;
+
  private:
   std::uintptr_t base_;
 };
