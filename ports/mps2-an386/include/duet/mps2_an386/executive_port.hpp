@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "duet/cortex_m/interrupts.hpp"
+#include "duet/cortex_m/registers.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_timer.hpp"
 #include "duet/rt/task_table.hpp"
@@ -44,6 +45,26 @@ class ExecutivePort {
  private:
   static constexpr CmsdkTimer base_timer{timer0_base};
   static constexpr CmsdkTimer cycle_counter{timer1_base};
+};
+
+// The board's executive port plus an output per task: LED i (bit i of the SCC's CFG1 register) is lit while task i
+// runs, for i < 8; on hardware the same hooks drive a pin that an oscilloscope watches.
+class LedPerTaskPort : public ExecutivePort {
+ public:
+  static constexpr std::uintptr_t leds = 0x4002'F004;
+  static constexpr std::size_t led_count = 8;
+
+  void task_started(std::size_t task) { set(task, true); }
+  void task_finished(std::size_t task) { set(task, false); }
+
+ private:
+  static void set(std::size_t task, bool lit) {
+    if (task >= led_count) return;
+    const CriticalSection masked;  // a read-modify-write that nested handlers also do
+    const std::uint32_t bit = 1U << task;
+    volatile std::uint32_t& register_ = cortex_m::register32(leds);
+    register_ = lit ? (register_ | bit) : (register_ & ~bit);
+  }
 };
 
 }  // namespace duet::mps2_an386
