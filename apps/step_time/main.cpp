@@ -1,7 +1,7 @@
 // The thesis' step-time test on the emulated Cortex-M4: a model whose only work is to toggle an output every base
 // step (a square wave on the board's LED0), run at shorter and shorter base periods. A period is met when no step
-// overran and every toggle came exactly one period after the one before. Run under -icount shift=2: 4 ns per
-// instruction, about the STM32MP15's Cortex-M4 at 209 MHz and one instruction per cycle.
+// overran and every toggle came one period, within one timer cycle (40 ns), after the one before. Run under -icount
+// shift=2: 4 ns per instruction, about the STM32MP15's Cortex-M4 at 209 MHz and one instruction per cycle.
 
 #include <array>
 #include <cstdint>
@@ -72,17 +72,18 @@ bool run_at(const Period& period) {
   CountingPort port;
   CountingExecutive executive{model, port};
   wave = {};
-  if (!CountingPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return false;
   duet::bench::running_executive = &executive;
-  executive.run();
-  executive.terminate();
+  const bool ran = duet::mps2_an386::run_model(executive, model);
   duet::bench::running_executive = nullptr;
+  if (!ran) return false;
 
   const std::uint32_t period_cycles =
       static_cast<std::uint32_t>(static_cast<std::uint64_t>(period.ns) * board::peripheral_clock_hz / 1'000'000'000U);
   const std::uint32_t overruns = executive.statistics(0).overruns;
-  const bool met =
-      overruns == 0 && wave.toggles == period.steps && wave.shortest == period_cycles && wave.longest == period_cycles;
+  // QEMU takes an interrupt at the end of a block of translated instructions, so the toggle may come one timer
+  // cycle (40 ns) late or early, as it would on hardware by interrupt latency.
+  const bool met = overruns == 0 && wave.toggles == period.steps && wave.shortest + 1U >= period_cycles &&
+                   wave.longest <= period_cycles + 1U;
   duet::TextBuffer<160> line;
   line.append("period ").append(period.name).append(": ").append(wave.toggles).append(" toggles, ");
   line.append(overruns).append(" overruns, toggle intervals ").append(wave.shortest).append("..");

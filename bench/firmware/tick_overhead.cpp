@@ -11,12 +11,10 @@ void nothing() {}
 std::uint32_t idle_rounds_of(const rt::ModelDescription& model) {
   CountingPort port;
   CountingExecutive executive{model, port};
-  if (!CountingPort::configure(model) || executive.initialize() != rt::TaskTableError::none) return 0;
   running_executive = &executive;
-  executive.run();
-  executive.terminate();
+  const bool ran = mps2_an386::run_model(executive, model);
   running_executive = nullptr;
-  return port.idle_rounds;
+  return ran ? port.idle_rounds : 0;
 }
 
 std::uint64_t hundredths_of_instructions_per_tick(std::uint32_t period_ns, std::uint32_t ticks, void (*step)(),

@@ -109,12 +109,10 @@ extern "C" void DUALTIMER_IRQHandler() {
 int main() {
   board::initialize();
   duet::cortex_m::console_write("32-word samples written every 317 us by an interrupt, read in 192 us every 1 ms\n");
-  if (!duet::tests::TracedPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
   writer_timer.start_periodic_interrupt(writer_period_cycles);
-  duet::cortex_m::enable_interrupts();
-  executive.run();
+  const bool ran = duet::mps2_an386::run_model(executive, model);
   writer_timer.stop();
-  executive.terminate();
+  if (!ran) return 1;
 
   print_tally("through AsyncTransfer", through_transfer);
   print_tally("through a plain variable", through_shared);

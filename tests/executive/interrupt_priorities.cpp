@@ -63,10 +63,7 @@ int main() {
   board::initialize();
   duet::cortex_m::console_write(
       "interrupt tasks: A (2.0) triggers B (1.1), C (2.1), D (2.0); tasks 0 base, 1 A, 2 B, 3 C, 4 D\n");
-  if (!duet::tests::TracedPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
-  duet::cortex_m::enable_interrupts();
-  executive.run();
-  executive.terminate();
+  if (!duet::mps2_an386::run_model(executive, model)) return 1;
   port.print_trace(16);
   return 0;
 }

@@ -61,10 +61,7 @@ int main() {
   duet::mps2_an386::initialize();
   duet::cortex_m::console_write(policy == duet::rt::OverrunPolicy::stop ? "stop" : "count and skip");
   duet::cortex_m::console_write(": 1.5 ms steps at ticks 5, 15, ... of a 1 ms base rate, 50 ticks\n");
-  if (!duet::tests::TracedPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
-  duet::cortex_m::enable_interrupts();
-  executive.run();
-  executive.terminate();
+  if (!duet::mps2_an386::run_model(executive, model)) return 1;
 
   duet::tests::print_task(executive, 0, "base");
   duet::TextBuffer<96> line;

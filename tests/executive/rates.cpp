@@ -58,10 +58,7 @@ int main() {
   duet::mps2_an386::initialize();
   duet::cortex_m::console_write(mode == TaskingMode::multi ? "multitasking" : "single-tasking");
   duet::cortex_m::console_write(": rates of 1, 2 and 4 ticks of 1 ms, 400 ticks\n");
-  if (!TracedPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
-  duet::cortex_m::enable_interrupts();
-  executive.run();
-  executive.terminate();
+  if (!duet::mps2_an386::run_model(executive, model)) return 1;
 
   port.print_trace(24);
   duet::tests::print_task(executive, 0, "base");

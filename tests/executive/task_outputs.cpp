@@ -49,10 +49,7 @@ DUET_MPS2_AN386_EXECUTIVE_HANDLERS(executive)
 int main() {
   duet::mps2_an386::initialize();
   duet::cortex_m::cycle_counter::start();
-  if (!LedPerTaskPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
-  duet::cortex_m::enable_interrupts();
-  executive.run();
-  executive.terminate();
+  if (!duet::mps2_an386::run_model(executive, model)) return 1;
 
   duet::TextBuffer<160> line;
   line.append("LEDs lit inside the base rate: ").append_hex(leds_seen_by_base, 2);

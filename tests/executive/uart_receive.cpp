@@ -58,10 +58,7 @@ extern "C" void UART0_RX_IRQHandler() { executive.on_interrupt_task(1); }
 int main() {
   board::initialize();
   board::console_uart().enable_receive_interrupt();
-  if (!duet::tests::TracedPort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
-  duet::cortex_m::enable_interrupts();
-  executive.run();
-  executive.terminate();
+  if (!duet::mps2_an386::run_model(executive, model)) return 1;
 
   duet::TextBuffer<128> line;
   line.append("received '").append(std::string_view{received.data(), received_count}).append("', stopped by ");

@@ -67,6 +67,18 @@ class LedPerTaskPort : public ExecutivePort {
   }
 };
 
+// What a board's main does with a model: configures the interrupts of its tasks, initializes it, enables interrupts,
+// runs it until it stops and terminates it. False, with nothing run, if the model does not fit the board or its task
+// table is wrong.
+template <typename Executive>
+[[nodiscard]] bool run_model(Executive& executive, const rt::ModelDescription& model) {
+  if (!ExecutivePort::configure(model) || executive.initialize() != rt::TaskTableError::none) return false;
+  cortex_m::enable_interrupts();
+  executive.run();
+  executive.terminate();
+  return true;
+}
+
 }  // namespace duet::mps2_an386
 
 // Defines the interrupt handlers that connect `executive` (an Executive<ExecutivePort, N> with static storage) to the
