@@ -105,6 +105,21 @@ TEST_F(ExecutiveTest, SingleTaskingRunsEveryDueRateFastestFirstInTheTimerInterru
   EXPECT_TRUE(port.triggered_rates.empty());
 }
 
+TEST_F(ExecutiveTest, ReleaseTicksFollowTheRatesPeriodsAlsoAcrossASkippedTick) {
+  const ModelDescription model = model_with(TaskingMode::single);
+  Executive<FakePort, 4> executive{model, port};
+  ASSERT_EQ(executive.initialize(), TaskTableError::none);
+  ASSERT_TRUE(executive.begin());
+  for (std::uint64_t tick = 0; tick < 12; ++tick) {
+    ASSERT_EQ(executive.ticks(), tick);
+    EXPECT_EQ(executive.is_release_tick(1), tick % 2 == 0) << tick;
+    EXPECT_EQ(executive.is_release_tick(2), tick % 5 == 0) << tick;
+    port.tick_pending = tick == 6;  // tick 7 is skipped
+    executive.on_base_tick();
+    if (tick == 6) ++tick;
+  }
+}
+
 TEST_F(ExecutiveTest, MultitaskingTriggersEachSlowerRateAndRunsItFromItsOwnInterrupt) {
   const ModelDescription model = model_with(TaskingMode::multi);
   Executive<FakePort, 4> executive{model, port};

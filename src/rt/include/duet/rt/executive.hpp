@@ -138,7 +138,7 @@ class Executive {
   }
 
   // True while the base tick `ticks()` releases `rate`: what deterministic rate transitions ask in the faster task.
-  [[nodiscard]] bool is_release_tick(std::size_t rate) const { return ticks_ % model_.tasks[rate].period_ticks == 0; }
+  [[nodiscard]] bool is_release_tick(std::size_t rate) const { return ticks_until_release_[rate] == 0; }
 
   // Base ticks so far; during a base-rate step, the index of the current tick.
   [[nodiscard]] std::uint64_t ticks() const { return ticks_; }
