@@ -23,9 +23,6 @@ using duet::bench::CountingPort;
 
 constexpr unsigned icount_shift = 2;
 
-// The serial communication controller's CFG1 register drives the board's LEDs; bit 0 is LED0.
-constexpr std::uintptr_t leds = 0x4002'F004;
-
 struct Period {
   std::uint32_t ns;
   std::uint32_t steps;
@@ -49,7 +46,8 @@ Wave wave;
 constexpr board::CmsdkTimer cycle_counter{board::timer1_base};  // runs free once the executive port is configured
 
 void toggle_output() {
-  duet::cortex_m::register32(leds) = duet::cortex_m::register32(leds) ^ 1U;
+  volatile std::uint32_t& leds = duet::cortex_m::register32(board::leds_register);
+  leds = leds ^ 1U;  // LED0
   const std::uint32_t now = ~cycle_counter.value();
   if (wave.toggles++ != 0) {
     const std::uint32_t interval = now - wave.last_cycles;

@@ -20,7 +20,7 @@ std::uint32_t leds_seen_by_base = 0;
 std::uint32_t leds_seen_by_slow = 0;
 std::uint32_t dwt_cycles = 1;
 
-std::uint32_t leds() { return duet::cortex_m::register32(LedPerTaskPort::leds) & 0xFFU; }
+std::uint32_t leds() { return duet::cortex_m::register32(duet::mps2_an386::leds_register) & 0xFFU; }
 void base_step() {
   leds_seen_by_base |= leds();
   dwt_cycles = duet::cortex_m::cycle_counter::now();

@@ -16,6 +16,8 @@ inline constexpr unsigned device_interrupt_count = 32;
 inline constexpr std::uintptr_t timer0_base = 0x4000'0000;
 inline constexpr std::uintptr_t timer1_base = 0x4000'1000;
 inline constexpr std::uintptr_t dual_timer_base = 0x4000'2000;
+// The serial communication controller's CFG1 register: the board's user LEDs, bit i for LED i.
+inline constexpr std::uintptr_t leds_register = 0x4002'F004;
 inline constexpr std::uintptr_t uart0_base = 0x4000'4000;
 inline constexpr std::uintptr_t uart1_base = 0x4000'5000;
 inline constexpr std::uintptr_t uart2_base = 0x4000'6000;

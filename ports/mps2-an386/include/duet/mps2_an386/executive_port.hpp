@@ -47,11 +47,10 @@ class ExecutivePort {
   static constexpr CmsdkTimer cycle_counter{timer1_base};
 };
 
-// The board's executive port plus an output per task: LED i (bit i of the SCC's CFG1 register) is lit while task i
-// runs, for i < 8; on hardware the same hooks drive a pin that an oscilloscope watches.
+// The board's executive port plus an output per task: LED i (leds_register) is lit while task i runs, for i < 8; on
+// hardware the same hooks drive a pin that an oscilloscope watches.
 class LedPerTaskPort : public ExecutivePort {
  public:
-  static constexpr std::uintptr_t leds = 0x4002'F004;
   static constexpr std::size_t led_count = 8;
 
   void task_started(std::size_t task) { set(task, true); }
@@ -62,7 +61,7 @@ class LedPerTaskPort : public ExecutivePort {
     if (task >= led_count) return;
     const CriticalSection masked;  // a read-modify-write that nested handlers also do
     const std::uint32_t bit = 1U << task;
-    volatile std::uint32_t& register_ = cortex_m::register32(leds);
+    volatile std::uint32_t& register_ = cortex_m::register32(leds_register);
     register_ = lit ? (register_ | bit) : (register_ & ~bit);
   }
 };

@@ -27,7 +27,7 @@ class NestedTiming {
     const std::uint32_t gross = now_cycles - frame.start;
     if (depth_ == 0) {
       busy_cycles_ += gross;
-    } else if (depth_ - 1 < max_depth) {
+    } else {
       frames_[depth_ - 1].preempted += gross;
     }
     return gross - frame.preempted;
