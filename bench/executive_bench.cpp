@@ -23,7 +23,7 @@ void lock_step_ticks_of_an_empty_model(benchmark::State& state) {
     return;
   }
   constexpr std::uint64_t ticks_per_iteration = 1000;
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
     port.advance(ticks_per_iteration);
     benchmark::DoNotOptimize(executive.ticks());
   }

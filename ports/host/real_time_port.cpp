@@ -2,9 +2,9 @@
 
 #include <pthread.h>
 #include <sched.h>
-#include <time.h>
 
 #include <chrono>
+#include <ctime>
 
 namespace duet::host {
 namespace {

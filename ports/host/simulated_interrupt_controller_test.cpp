@@ -13,7 +13,7 @@ class SimulatedInterruptControllerTest : public ::testing::Test {
   // Connects `line` with a handler that records "+name", runs `body`, and records "-name".
   void connect(
       std::size_t line, SimulatedInterruptController::Priority priority, const std::string& name,
-      std::function<void()> body = [] {}) {
+      const std::function<void()>& body = [] {}) {
     controller.connect(line, priority, [this, name, body] {
       trace.push_back("+" + name);
       body();
@@ -49,7 +49,7 @@ TEST_F(SimulatedInterruptControllerTest, TheSameGroupWaitsAndSubPriorityThenLine
 TEST_F(SimulatedInterruptControllerTest, ALessUrgentLineWaitsForTheRunningOne) {
   connect(1, {1, 0}, "urgent", [this] {
     controller.pend(2);
-    trace.push_back("still urgent");
+    trace.emplace_back("still urgent");
   });
   connect(2, {3, 0}, "later");
   controller.pend(1);

@@ -14,16 +14,16 @@ namespace {
 struct FakePort {
   struct CriticalSection {};
 
-  std::uint32_t cycles() const { return now; }
+  [[nodiscard]] std::uint32_t cycles() const { return now; }
   void start_base_timer(std::uint32_t period_ns) { timer_period_ns = period_ns; }
   void stop_base_timer() { timer_period_ns = 0; }
-  bool base_tick_pending() const { return tick_pending; }
+  [[nodiscard]] bool base_tick_pending() const { return tick_pending; }
   void skip_base_tick() {
     tick_pending = false;
     ++skipped_ticks;
   }
   void trigger_rate(std::size_t rate) { triggered_rates.push_back(rate); }
-  void idle() { on_idle(); }
+  void idle() const { on_idle(); }
   void task_started(std::size_t task) { trace.push_back("+" + std::to_string(task)); }
   void task_finished(std::size_t task) { trace.push_back("-" + std::to_string(task)); }
 

@@ -61,7 +61,7 @@ class AsyncTransfer {
   // In the writing task. Wait-free.
   void write(const T& value) {
     slots_[writer_slot_] = value;
-    const std::uint8_t published = static_cast<std::uint8_t>(writer_slot_ | fresh);
+    const auto published = static_cast<std::uint8_t>(writer_slot_ | fresh);
     writer_slot_ = static_cast<std::uint8_t>(exchange_.exchange(published, std::memory_order_acq_rel) & slot_mask);
   }
 
