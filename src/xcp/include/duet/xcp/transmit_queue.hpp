@@ -1,0 +1,90 @@
+#pragma once
+// The slave's outgoing packets: a bounded byte ring of [length u16][packet] records, filled by several producers that
+// may preempt each other (tasks sampling DAQ at different interrupt priorities, the command handler) and emptied by
+// one consumer (the transport). Producers write under the port's lock (masked interrupts on the Cortex-M4, a mutex on
+// the PC) and never wait for the consumer: what does not fit is refused, whole, and the caller counts it. The
+// consumer copies packets out without the lock.
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+namespace duet::xcp {
+
+// The port's lock around a producer's write: `lock` returns what `unlock` needs to restore (a saved interrupt mask).
+struct QueueLock {
+  std::uint32_t (*lock)() = nullptr;
+  void (*unlock)(std::uint32_t saved) = nullptr;
+};
+
+class TransmitQueue {
+ public:
+  static constexpr std::size_t record_header = 2;
+
+  // Writes the bytes of the packets a producer adds, wrapping round the ring as needed.
+  class Appender {
+   public:
+    Appender(std::span<std::uint8_t> ring, std::size_t position) : ring_(ring), position_(position) {}
+    Appender& u8(std::uint8_t value) {
+      ring_[position_] = value;
+      position_ = position_ + 1 == ring_.size() ? 0 : position_ + 1;
+      return *this;
+    }
+    Appender& u16(std::uint16_t value) {
+      return u8(static_cast<std::uint8_t>(value)).u8(static_cast<std::uint8_t>(value >> 8U));
+    }
+    Appender& u32(std::uint32_t value) {
+      return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
+    }
+    Appender& bytes(const std::uint8_t* values, std::size_t count) {
+      for (std::size_t byte = 0; byte < count; ++byte) u8(values[byte]);
+      return *this;
+    }
+    // Starts the record of a packet of `size` bytes; the caller then writes exactly that many.
+    Appender& packet(std::size_t size) { return u16(static_cast<std::uint16_t>(size)); }
+
+   private:
+    friend class TransmitQueue;
+    std::span<std::uint8_t> ring_;
+    std::size_t position_;
+  };
+
+  TransmitQueue(std::span<std::uint8_t> storage, QueueLock lock) : ring_(storage), lock_(lock) {}
+
+  // Adds packets whose records take `record_bytes` in all (each packet's size + record_header) if they fit with
+  // `headroom` bytes to spare; `fill(Appender&)` writes exactly those records. False, with nothing added, otherwise.
+  // Interrupt-safe; never waits.
+  template <typename Fill>
+  bool push(std::size_t record_bytes, std::size_t headroom, Fill&& fill) {
+    const std::uint32_t saved = lock_.lock != nullptr ? lock_.lock() : 0;
+    const std::size_t head = head_.load(std::memory_order_relaxed);
+    const std::size_t used = head - tail_.load(std::memory_order_acquire);
+    const bool fits = record_bytes + headroom <= ring_.size() - used;
+    if (fits) {
+      Appender appender{ring_, head % ring_.size()};
+      fill(appender);
+      head_.store(head + record_bytes, std::memory_order_release);
+    }
+    if (lock_.unlock != nullptr) lock_.unlock(saved);
+    return fits;
+  }
+
+  // Copies the oldest packet into `packet` and removes it; returns its size, 0 if the queue is empty. A packet larger
+  // than `packet` is removed and reported as 0 bytes long (a programming error: size the buffer for MAX_DTO).
+  std::size_t pop(std::span<std::uint8_t> packet);
+
+  [[nodiscard]] bool empty() const {
+    return head_.load(std::memory_order_acquire) == tail_.load(std::memory_order_relaxed);
+  }
+  [[nodiscard]] std::size_t capacity() const { return ring_.size(); }
+
+ private:
+  std::span<std::uint8_t> ring_;
+  QueueLock lock_;
+  // Positions grow without bound (modulo the ring's size when used); head_ moves under the lock, tail_ only by pop.
+  std::atomic<std::size_t> head_{0};
+  std::atomic<std::size_t> tail_{0};
+};
+
+}  // namespace duet::xcp
