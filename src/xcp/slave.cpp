@@ -31,6 +31,25 @@ const std::array<Slave::CommandEntry, 0x40>& Slave::commands() {
     set(Command::download_max, &Slave::download_max, 1, resource::calibration_paging);
     set(Command::short_download, &Slave::short_download, 8, resource::calibration_paging);
     set(Command::modify_bits, &Slave::modify_bits, 6, resource::calibration_paging);
+    constexpr std::uint8_t daq = resource::daq;
+    set(Command::free_daq, &Slave::free_daq, 1, daq);
+    set(Command::alloc_daq, &Slave::alloc_daq, 4, daq);
+    set(Command::alloc_odt, &Slave::alloc_odt, 5, daq);
+    set(Command::alloc_odt_entry, &Slave::alloc_odt_entry, 6, daq);
+    set(Command::set_daq_ptr, &Slave::set_daq_ptr, 6, daq);
+    set(Command::write_daq, &Slave::write_daq, 8, daq);
+    set(Command::write_daq_multiple, &Slave::write_daq_multiple, 2, daq);
+    set(Command::read_daq, &Slave::read_daq, 1, daq);
+    set(Command::clear_daq_list, &Slave::clear_daq_list, 4, daq);
+    set(Command::set_daq_list_mode, &Slave::set_daq_list_mode, 8, daq);
+    set(Command::get_daq_list_mode, &Slave::get_daq_list_mode, 4, daq);
+    set(Command::start_stop_daq_list, &Slave::start_stop_daq_list, 4, daq);
+    set(Command::start_stop_synch, &Slave::start_stop_synch, 2, daq);
+    set(Command::get_daq_clock, &Slave::get_daq_clock, 1);
+    set(Command::get_daq_processor_info, &Slave::get_daq_processor_info, 1);
+    set(Command::get_daq_resolution_info, &Slave::get_daq_resolution_info, 1);
+    set(Command::get_daq_event_info, &Slave::get_daq_event_info, 4);
+    set(Command::get_daq_list_info, &Slave::get_daq_list_info, 4);
     return entries;
   }();
   return table;
@@ -109,6 +128,7 @@ void Slave::write_memory(std::uint8_t* destination, std::span<const std::uint8_t
 }
 
 void Slave::reset_session() {
+  stop_all_daq();
   mta_ = {};
   seed_length_ = 0;
   seed_sent_ = 0;

@@ -34,7 +34,9 @@ Slave::Result Slave::connect(PacketReader& request, PacketWriter& response) {
   connected_ = true;
   locked_ = configuration_.protected_resources;
   reset_session();
-  response.u8(resource::calibration_paging).u8(comm_mode_basic).u8(configuration_.max_cto);
+  const bool has_daq = !configuration_.daq.lists.empty() && configuration_.queue != nullptr;
+  const auto resources = static_cast<std::uint8_t>(resource::calibration_paging | (has_daq ? resource::daq : 0U));
+  response.u8(resources).u8(comm_mode_basic).u8(configuration_.max_cto);
   response.u16(configuration_.max_dto).u8(protocol_layer_version).u8(transport_layer_version);
   return ok;
 }
@@ -47,7 +49,8 @@ Slave::Result Slave::disconnect(PacketReader&, PacketWriter&) {
 
 Slave::Result Slave::get_status(PacketReader&, PacketWriter& response) {
   // Session status, resource protection, state number (reserved before 1.4), session configuration id.
-  response.u8(0).u8(locked_).u8(0).u16(0);
+  constexpr std::uint8_t daq_running_status = 0x40;
+  response.u8(daq_running() ? daq_running_status : 0).u8(locked_).u8(0).u16(0);
   return ok;
 }
 

@@ -12,9 +12,11 @@
 #include <string_view>
 
 #include "duet/xcp/checksum.hpp"
+#include "duet/xcp/daq.hpp"
 #include "duet/xcp/memory_map.hpp"
 #include "duet/xcp/packet.hpp"
 #include "duet/xcp/protocol.hpp"
+#include "duet/xcp/transmit_queue.hpp"
 
 namespace duet::xcp {
 
@@ -49,6 +51,15 @@ struct SlaveConfiguration {
   // A DOWNLOAD sequence (DOWNLOAD + DOWNLOAD_NEXT ...) is collected here and written at its end, all at once. Its size
   // bounds the sequence; the application owns it.
   std::span<std::uint8_t> download_buffer;
+
+  // DAQ: event channels (the executive's tasks, in task order), the tables' storage, where samples go, and the
+  // clock that stamps them (in timestamp_unit_ns nanoseconds per tick). Without storage the slave offers no DAQ.
+  std::span<const EventChannel> events;
+  DaqStorage daq;
+  TransmitQueue* queue = nullptr;
+  std::uint32_t (*timestamp)() = nullptr;
+  std::uint8_t timestamp_unit = 3;  // 0 = 1 ns, 1 = 10 ns, 2 = 100 ns, 3 = 1 us, ...
+  std::uint16_t timestamp_ticks = 1;
 };
 
 // What a command handler says: a positive response with the payload it wrote, none at all, or an error code (the
@@ -74,6 +85,12 @@ class Slave {
 
   [[nodiscard]] bool connected() const { return connected_; }
   [[nodiscard]] std::uint8_t locked_resources() const { return locked_; }
+
+  // The task of event channel `event` has finished its step: samples every running DAQ list bound to it, whole, into
+  // the transmit queue. Interrupt-safe and wait-free; a sample that does not fit is dropped, counted, and announced by
+  // an EV_DAQ_OVERLOAD packet before the next sample that fits.
+  void on_event(std::uint16_t event);
+  [[nodiscard]] std::uint32_t overloads() const { return overloads_.load(std::memory_order_relaxed); }
 
  private:
   using Outcome = CommandOutcome;
@@ -110,6 +127,25 @@ class Slave {
   Result download_max(PacketReader& request, PacketWriter& response);
   Result short_download(PacketReader& request, PacketWriter& response);
   Result modify_bits(PacketReader& request, PacketWriter& response);
+  // DAQ commands (slave_daq.cpp).
+  Result free_daq(PacketReader& request, PacketWriter& response);
+  Result alloc_daq(PacketReader& request, PacketWriter& response);
+  Result alloc_odt(PacketReader& request, PacketWriter& response);
+  Result alloc_odt_entry(PacketReader& request, PacketWriter& response);
+  Result set_daq_ptr(PacketReader& request, PacketWriter& response);
+  Result write_daq(PacketReader& request, PacketWriter& response);
+  Result write_daq_multiple(PacketReader& request, PacketWriter& response);
+  Result read_daq(PacketReader& request, PacketWriter& response);
+  Result clear_daq_list(PacketReader& request, PacketWriter& response);
+  Result set_daq_list_mode(PacketReader& request, PacketWriter& response);
+  Result get_daq_list_mode(PacketReader& request, PacketWriter& response);
+  Result start_stop_daq_list(PacketReader& request, PacketWriter& response);
+  Result start_stop_synch(PacketReader& request, PacketWriter& response);
+  Result get_daq_clock(PacketReader& request, PacketWriter& response);
+  Result get_daq_processor_info(PacketReader& request, PacketWriter& response);
+  Result get_daq_resolution_info(PacketReader& request, PacketWriter& response);
+  Result get_daq_event_info(PacketReader& request, PacketWriter& response);
+  Result get_daq_list_info(PacketReader& request, PacketWriter& response);
 
   // The memory transfer address: a place in the memory map, or an identification GET_ID pointed at.
   struct TransferAddress {
@@ -118,6 +154,13 @@ class Slave {
     std::span<const std::uint8_t> identification;  // when not empty, UPLOAD reads from here
     bool points_to_identification = false;
   };
+
+  // Where the DAQ allocation sequence stands: FREE_DAQ, then ALLOC_DAQ, then ALLOC_ODT, then ALLOC_ODT_ENTRY.
+  enum class DaqAllocation : std::uint8_t { freed, lists, odts, entries };
+  Result write_daq_entry(std::uint8_t bit_offset, std::uint8_t size, std::uint8_t extension, std::uint32_t address);
+  [[nodiscard]] bool daq_running() const;
+  void stop_all_daq();
+  [[nodiscard]] std::size_t odt_payload(const DaqList& list, std::size_t odt_index) const;
 
   Result read_at_mta(std::uint32_t count, PacketWriter& response);
   Result write_at_mta(std::span<const std::uint8_t> bytes);
@@ -139,6 +182,16 @@ class Slave {
   // DOWNLOAD sequence in progress: bytes still expected, bytes collected.
   std::uint32_t download_remaining_ = 0;
   std::size_t download_collected_ = 0;
+  // DAQ tables in use, and the DAQ pointer of SET_DAQ_PTR / WRITE_DAQ.
+  DaqAllocation daq_allocation_ = DaqAllocation::freed;
+  std::uint16_t daq_lists_ = 0;
+  std::uint16_t daq_odts_ = 0;
+  std::uint16_t daq_entries_ = 0;
+  std::uint16_t daq_pointer_list_ = 0;
+  std::uint16_t daq_pointer_entry_ = 0;  // absolute entry index
+  std::uint16_t daq_pointer_end_ = 0;    // one past the ODT's last entry; equal to the pointer when not set
+  std::atomic<bool> overload_pending_{false};
+  std::atomic<std::uint32_t> overloads_{0};
   std::array<std::uint8_t, max_packet + 1> response_{};
 };
 

@@ -1,6 +1,8 @@
 // The slave's conformance suite: sessions written as tables of (request, exact expected response), byte for byte.
 // Requests and responses are hex; "" as a response means the slave must stay silent.
 
+#include "duet/xcp/slave.hpp"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -8,8 +10,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include "duet/xcp/slave.hpp"
 
 namespace duet::xcp {
 namespace {
@@ -68,9 +68,32 @@ bool user_command(PacketReader& request, PacketWriter& response, Error& error) {
   return true;
 }
 
-class SlaveConformance : public ::testing::TestWithParam<Session> {
+// A slave with declared memory, seed & key, a USER_CMD hook and DAQ: measurements 00 01 .. 0F at 0x1000 (read-only),
+// parameters 32 x 0xAA at 0x2000 (read-write), two event channels, room for 4 DAQ lists, 8 ODTs, 16 entries.
+class SlaveFixture : public ::testing::Test {
  protected:
-  // Measurements: 00 01 .. 0F at 0x1000, read-only. Parameters: 32 bytes of 0xAA at 0x2000, read-write.
+  static std::uint32_t fixed_timestamp() { return 0x1122'3344; }
+
+  SlaveConfiguration make_configuration(std::uint8_t protected_resources = 0, bool with_user_command = true) {
+    for (std::size_t byte = 0; byte < measurements.size(); ++byte) measurements[byte] = static_cast<std::uint8_t>(byte);
+    parameters.fill(0xAA);
+    return {
+        .memory = MemoryMap{regions},
+        .max_cto = 16,
+        .max_dto = 1024,
+        .identification = "duet_test",
+        .a2l = a2l,
+        .protected_resources = protected_resources,
+        .seed_and_key = {make_seed, key_is_valid},
+        .user_command = with_user_command ? user_command : nullptr,
+        .download_buffer = download_buffer,
+        .events = events,
+        .daq = {daq_lists, odts, entries},
+        .queue = &queue,
+        .timestamp = fixed_timestamp,
+    };
+  }
+
   std::array<std::uint8_t, 16> measurements{};
   std::array<std::uint8_t, 32> parameters{};
   std::array<std::uint8_t, 64> download_buffer{};
@@ -82,23 +105,20 @@ class SlaveConformance : public ::testing::TestWithParam<Session> {
                    .memory = parameters.data(),
                    .access = Access::read_write}};
   static constexpr std::array<std::uint8_t, 4> a2l{'A', '2', 'L', '!'};
+  static constexpr std::array<EventChannel, 2> events{EventChannel{.name = "1 ms", .time_cycle = 1, .time_unit = 6},
+                                                      EventChannel{.name = "uart", .priority = 2}};
+  std::array<DaqList, 4> daq_lists{};
+  std::array<Odt, 8> odts{};
+  std::array<OdtEntry, 16> entries{};
+  std::array<std::uint8_t, 4096> queue_storage{};
+  TransmitQueue queue{queue_storage, {}};
 };
+
+class SlaveConformance : public SlaveFixture, public ::testing::WithParamInterface<Session> {};
 
 TEST_P(SlaveConformance, AnswersEveryRequestExactly) {
   const Session& session = GetParam();
-  for (std::size_t byte = 0; byte < measurements.size(); ++byte) measurements[byte] = static_cast<std::uint8_t>(byte);
-  parameters.fill(0xAA);
-  const SlaveConfiguration configuration{
-      .memory = MemoryMap{regions},
-      .max_cto = 16,
-      .max_dto = 1024,
-      .identification = "duet_test",
-      .a2l = a2l,
-      .protected_resources = session.protected_resources,
-      .seed_and_key = {make_seed, key_is_valid},
-      .user_command = session.with_user_command ? user_command : nullptr,
-      .download_buffer = download_buffer,
-  };
+  const SlaveConfiguration configuration = make_configuration(session.protected_resources, session.with_user_command);
   Slave slave{configuration};
   for (const Step& step : session.steps) {
     const std::vector<std::uint8_t> request = from_hex(step.request);
@@ -107,7 +127,7 @@ TEST_P(SlaveConformance, AnswersEveryRequestExactly) {
 }
 
 const std::string connect = "FF 00";
-const std::string connected = "FF 01 80 10 00 04 01 01";
+const std::string connected = "FF 05 80 10 00 04 01 01";  // CAL/PAG and DAQ
 
 INSTANTIATE_TEST_SUITE_P(
     Sessions, SlaveConformance,
@@ -234,6 +254,75 @@ INSTANTIATE_TEST_SUITE_P(
                  {"F7 14 5B 58 59 5E 5F 5C 5D 52 53 50 51 56 57 54", "FF 04"},  // 14 of 20 key bytes: still locked
                  {"F7 06 55 4A 4B 48 49 4E", "FF 00"}},
                 resource::daq},
+        Session{"daq_information",
+                {{connect, connected},
+                 {"DA", "FF 93 04 00 02 00 00 00"},
+                 {"D9", "FF 01 FF 01 00 34 01 00"},
+                 {"D7 00 00 00", "FF 84 FF 04 01 06 00"},
+                 {"F5 04", "FF 31 20 6D 73"},  // "1 ms"
+                 {"D7 00 01 00", "FF 84 FF 04 00 00 02"},
+                 {"D7 00 02 00", "FE 22"},
+                 {"DC", "FF 00 00 00 44 33 22 11"}}},
+        Session{"daq_configuration",
+                {{connect, connected},
+                 {"D4 00 00 00 01", "FE 29"},  // ALLOC_ODT before ALLOC_DAQ
+                 {"D6", "FF"},
+                 {"D5 00 05 00", "FE 30"},
+                 {"D5 00 02 00", "FF"},
+                 {"D5 00 01 00", "FE 29"},
+                 {"D3 00 00 00 00 01", "FE 29"},  // ALLOC_ODT_ENTRY before ALLOC_ODT
+                 {"D4 00 02 00 01", "FE 22"},
+                 {"D4 00 00 00 02", "FF"},
+                 {"D4 00 01 00 01", "FF"},
+                 {"D4 00 01 00 01", "FE 29"},  // list 1 has its ODTs already
+                 {"D3 00 00 00 00 02", "FF"},
+                 {"D3 00 00 00 01 01", "FF"},
+                 {"D3 00 01 00 00 01", "FF"},
+                 {"D3 00 01 00 01 01", "FE 22"},
+                 {"D3 00 00 00 02 10", "FE 22"},
+                 {"D4 00 01 00 01", "FE 29"},           // no more ODTs once entries are allocated
+                 {"E1 FF 04 00 00 10 00 00", "FE 29"},  // no DAQ pointer yet
+                 {"E2 00 00 00 00 00", "FF"},
+                 {"E1 FF 04 00 00 10 00 00", "FF"},
+                 {"E1 FF 02 00 04 10 00 00", "FF"},
+                 {"E1 FF 02 00 06 10 00 00", "FE 29"},  // past the ODT's entries
+                 {"E2 00 00 00 01 00", "FF"},
+                 {"E1 FF 04 00 00 00 00 00", "FE 24"},  // undeclared memory
+                 {"E1 00 04 00 00 10 00 00", "FE 22"},  // bit offsets are not offered
+                 {"E1 FF 00 00 00 10 00 00", "FE 22"},
+                 {"C7 01 FF 02 0E 10 00 00 00 00", "FF"},
+                 {"C7 02 FF 02 0E 10 00 00 00 00", "FE 21"},
+                 {"E2 00 00 00 00 00", "FF"},
+                 {"DB", "FF FF 04 00 00 10 00 00"},
+                 {"DB", "FF FF 02 00 04 10 00 00"},
+                 {"DB", "FE 29"},
+                 {"E2 00 03 00 00 00", "FE 22"},
+                 {"E2 00 01 00 00 00", "FF"},
+                 {"E1 FF 01 00 00 20 00 00", "FF"},  // parameters can be measured too
+                 {"DE 01 00 00", "FE 2A"},           // no event yet
+                 {"E0 10 00 00 00 00 01 00", "FF"},
+                 {"E0 02 01 00 01 00 01 00", "FE 27"},  // STIM
+                 {"E0 00 01 00 02 00 01 00", "FE 22"},  // no event 2
+                 {"E0 00 01 00 01 00 00 00", "FE 22"},  // prescaler 0
+                 {"E0 00 01 00 01 00 02 00", "FF"},
+                 {"DF 00 00 00", "FF 10 00 00 00 00 01 00"},
+                 {"DE 02 00 00", "FF 00"},
+                 {"DE 02 01 00", "FF 02"},
+                 {"DF 00 01 00", "FF 01 00 00 01 00 02 00"},
+                 {"DD 01", "FF"},
+                 {"FD", "FF 40 00 00 00 00"},
+                 {"DF 00 00 00", "FF 50 00 00 00 00 01 00"},
+                 {"E2 00 00 00 00 00", "FE 11"},
+                 {"E0 10 00 00 00 00 01 00", "FE 11"},
+                 {"D8 00 00 00", "FF 04 02 02 00 00"},
+                 {"D8 00 04 00", "FE 22"},
+                 {"DD 03", "FE 22"},
+                 {"DD 00", "FF"},
+                 {"FD", "FF 00 00 00 00 00"},
+                 {"E3 00 00 00", "FF"},
+                 {"DE 01 00 00", "FE 2A"}}},  // cleared entries make the list incomplete
+        Session{
+            "daq_locked", {{connect, connected}, {"D6", "FE 25"}, {"DA", "FF 93 04 00 02 00 00 00"}}, resource::daq},
         Session{"a_wrong_key_ends_the_session",
                 {{connect, connected},
                  {"F8 00 01", "FF 04 01 02 03 04"},
@@ -243,6 +332,86 @@ INSTANTIATE_TEST_SUITE_P(
                  {"FD", "FF 00 01 00 00 00"}},  // locked again
                 resource::calibration_paging}),
     [](const ::testing::TestParamInfo<Session>& session) { return session.param.name; });
+
+// Runs requests that must all succeed.
+void run(Slave& slave, const std::vector<std::string>& requests) {
+  for (const std::string& request : requests) {
+    const std::vector<std::uint8_t> bytes = from_hex(request);
+    ASSERT_EQ(to_hex(slave.handle(bytes)).substr(0, 2), "FF") << request;
+  }
+}
+
+std::vector<std::string> drain(TransmitQueue& queue) {
+  std::vector<std::string> packets;
+  std::array<std::uint8_t, 1024> packet{};
+  while (const std::size_t size = queue.pop(packet)) packets.push_back(to_hex(std::span{packet}.first(size)));
+  return packets;
+}
+
+// List 0 on event 0 with timestamps: ODT 0 = 4 bytes at 0x1000 and 2 at 0x1004, ODT 1 = 2 bytes at 0x100E.
+// List 1 on event 1 every second time: 1 byte at 0x2000.
+const std::vector<std::string> two_lists = {"FF 00",
+                                            "D6",
+                                            "D5 00 02 00",
+                                            "D4 00 00 00 02",
+                                            "D4 00 01 00 01",
+                                            "D3 00 00 00 00 02",
+                                            "D3 00 00 00 01 01",
+                                            "D3 00 01 00 00 01",
+                                            "E2 00 00 00 00 00",
+                                            "E1 FF 04 00 00 10 00 00",
+                                            "E1 FF 02 00 04 10 00 00",
+                                            "E2 00 00 00 01 00",
+                                            "E1 FF 02 00 0E 10 00 00",
+                                            "E2 00 01 00 00 00",
+                                            "E1 FF 01 00 00 20 00 00",
+                                            "E0 10 00 00 00 00 01 00",
+                                            "E0 00 01 00 01 00 02 00",
+                                            "DE 02 00 00",
+                                            "DE 02 01 00",
+                                            "DD 01"};
+
+TEST_F(SlaveFixture, EventsSampleTheirListsIntoWholePackets) {
+  const SlaveConfiguration configuration = make_configuration();
+  Slave slave{configuration};
+  run(slave, two_lists);
+  slave.on_event(0);
+  slave.on_event(1);  // prescaler 2: not yet
+  EXPECT_EQ(drain(queue), (std::vector<std::string>{"00 44 33 22 11 00 01 02 03 04 05", "01 0E 0F"}));
+  measurements[0] = 0x77;
+  slave.on_event(1);
+  slave.on_event(0);
+  EXPECT_EQ(drain(queue), (std::vector<std::string>{"02 AA", "00 44 33 22 11 77 01 02 03 04 05", "01 0E 0F"}));
+  run(slave, {"DD 00"});
+  slave.on_event(0);
+  EXPECT_TRUE(queue.empty());
+  EXPECT_EQ(slave.overloads(), 0U);
+}
+
+TEST_F(SlaveFixture, ASampleThatDoesNotFitIsDroppedWholeCountedAndAnnounced) {
+  std::array<std::uint8_t, 40> small{};  // one sample of list 0 (18 bytes of records) plus the headroom of 18
+  TransmitQueue small_queue{small, {}};
+  SlaveConfiguration configuration = make_configuration();
+  configuration.queue = &small_queue;
+  Slave slave{configuration};
+  run(slave, two_lists);
+  slave.on_event(0);
+  slave.on_event(0);  // no room: dropped whole
+  EXPECT_EQ(slave.overloads(), 1U);
+  EXPECT_EQ(drain(small_queue), (std::vector<std::string>{"00 44 33 22 11 00 01 02 03 04 05", "01 0E 0F"}));
+  slave.on_event(1);
+  slave.on_event(1);  // the next sample that fits comes after EV_DAQ_OVERLOAD
+  EXPECT_EQ(drain(small_queue), (std::vector<std::string>{"FD 06", "02 AA"}));
+}
+
+TEST_F(SlaveFixture, DisconnectStopsDaq) {
+  const SlaveConfiguration configuration = make_configuration();
+  Slave slave{configuration};
+  run(slave, two_lists);
+  run(slave, {"FE"});
+  slave.on_event(0);
+  EXPECT_TRUE(queue.empty());
+}
 
 }  // namespace
 }  // namespace duet::xcp

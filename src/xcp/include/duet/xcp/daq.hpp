@@ -1,0 +1,64 @@
+#pragma once
+// DAQ (data acquisition) tables with dynamic configuration: the master allocates DAQ lists, their ODTs (one packet
+// each) and the ODTs' entries (address, size) at run time, in storage the application sizes at build time. Each DAQ
+// list is bound to an event channel: one of the executive's tasks, which samples the list right after its step.
+
+#include <atomic>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+namespace duet::xcp {
+
+// An event channel, as GET_DAQ_EVENT_INFO and the A2L describe it.
+struct EventChannel {
+  std::string_view name;
+  std::uint8_t time_cycle = 0;  // the period in time_unit; 0 for an event without a period (an interrupt)
+  std::uint8_t time_unit = 0;   // 0 = 1 ns, 1 = 10 ns, ... 9 = 1 s (as the timestamp unit)
+  std::uint8_t priority = 0;    // 0 lowest ... 255 highest
+};
+
+struct OdtEntry {
+  const std::uint8_t* memory = nullptr;  // resolved and checked against the memory map at WRITE_DAQ
+  std::uint32_t address = 0;             // as the master wrote it, for READ_DAQ
+  std::uint8_t extension = 0;
+  std::uint8_t size = 0;  // 0: not written yet
+};
+
+struct Odt {
+  std::uint16_t first_entry = 0;
+  std::uint8_t entry_count = 0;
+};
+
+struct DaqList {
+  std::uint16_t first_odt = 0;
+  std::uint8_t odt_count = 0;
+  std::uint8_t mode = 0;  // SET_DAQ_LIST_MODE's bits the slave keeps (timestamp)
+  std::uint16_t event = 0;
+  bool event_set = false;
+  std::uint8_t prescaler = 1;
+  std::uint8_t priority = 0;
+  std::uint8_t prescaler_count = 0;  // the event's own context only
+  bool selected = false;
+  std::atomic<bool> running{false};
+};
+
+// The application's storage for the tables: sizes are its build-time choice.
+struct DaqStorage {
+  std::span<DaqList> lists;
+  std::span<Odt> odts;
+  std::span<OdtEntry> entries;
+};
+
+// SET_DAQ_LIST_MODE and GET_DAQ_LIST_MODE bits.
+namespace daq_mode {
+inline constexpr std::uint8_t selected = 0x01;
+inline constexpr std::uint8_t direction_stim = 0x02;
+inline constexpr std::uint8_t dto_counter = 0x08;
+inline constexpr std::uint8_t timestamp = 0x10;
+inline constexpr std::uint8_t pid_off = 0x20;
+inline constexpr std::uint8_t running = 0x40;
+inline constexpr std::uint8_t resume = 0x80;
+}  // namespace daq_mode
+
+}  // namespace duet::xcp
