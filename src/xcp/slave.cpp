@@ -31,6 +31,15 @@ const std::array<Slave::CommandEntry, 0x40>& Slave::commands() {
     set(Command::download_max, &Slave::download_max, 1, resource::calibration_paging);
     set(Command::short_download, &Slave::short_download, 8, resource::calibration_paging);
     set(Command::modify_bits, &Slave::modify_bits, 6, resource::calibration_paging);
+    constexpr std::uint8_t paging = resource::calibration_paging;
+    set(Command::set_cal_page, &Slave::set_cal_page, 4, paging);
+    set(Command::get_cal_page, &Slave::get_cal_page, 3, paging);
+    set(Command::get_pag_processor_info, &Slave::get_pag_processor_info, 1, paging);
+    set(Command::get_segment_info, &Slave::get_segment_info, 5, paging);
+    set(Command::get_page_info, &Slave::get_page_info, 4, paging);
+    set(Command::set_segment_mode, &Slave::set_segment_mode, 3, paging);
+    set(Command::get_segment_mode, &Slave::get_segment_mode, 3, paging);
+    set(Command::copy_cal_page, &Slave::copy_cal_page, 5, paging);
     constexpr std::uint8_t daq = resource::daq;
     set(Command::free_daq, &Slave::free_daq, 1, daq);
     set(Command::alloc_daq, &Slave::alloc_daq, 4, daq);
@@ -102,7 +111,7 @@ Slave::Result Slave::read_at_mta(std::uint32_t count, PacketWriter& response) {
     mta_.identification = source.subspan(count);
     return ok;
   }
-  const std::uint8_t* source = configuration_.memory.find(mta_.extension, mta_.address, count, Access::read_only);
+  const std::uint8_t* source = readable_memory(mta_.extension, mta_.address, count);
   if (source == nullptr) return fail(Error::access_denied);
   response.bytes({source, count});
   mta_.address += count;
@@ -112,11 +121,40 @@ Slave::Result Slave::read_at_mta(std::uint32_t count, PacketWriter& response) {
 Slave::Result Slave::write_at_mta(std::span<const std::uint8_t> bytes) {
   if (mta_.points_to_identification) return fail(Error::access_denied);
   const auto count = static_cast<std::uint32_t>(bytes.size());
-  std::uint8_t* destination = configuration_.memory.find(mta_.extension, mta_.address, count, Access::read_write);
+  std::uint8_t* destination = writable_memory(mta_.extension, mta_.address, count);
   if (destination == nullptr) return fail(Error::access_denied);
   write_memory(destination, bytes);
   mta_.address += count;
   return ok;
+}
+
+const CalibrationSegment* Slave::segment_at(std::uint8_t extension, std::uint32_t address, std::uint32_t size,
+                                            std::size_t& index) const {
+  for (index = 0; index < configuration_.segments.size() && index < max_segments; ++index) {
+    const CalibrationSegment& segment = configuration_.segments[index];
+    if (segment.extension != extension || address < segment.address) continue;
+    const std::uint32_t offset = address - segment.address;
+    if (offset <= segment.size && size <= segment.size - offset) return &segment;
+  }
+  return nullptr;
+}
+
+const std::uint8_t* Slave::readable_memory(std::uint8_t extension, std::uint32_t address, std::uint32_t size) const {
+  std::size_t index = 0;
+  if (const CalibrationSegment* segment = segment_at(extension, address, size, index)) {
+    const std::uint32_t offset = address - segment->address;
+    return xcp_page_[index] == working_page ? segment->working + offset : segment->reference + offset;
+  }
+  return configuration_.memory.find(extension, address, size, Access::read_only);
+}
+
+// The reference page is never writable: writes there are refused like writes to read-only memory.
+std::uint8_t* Slave::writable_memory(std::uint8_t extension, std::uint32_t address, std::uint32_t size) const {
+  std::size_t index = 0;
+  if (const CalibrationSegment* segment = segment_at(extension, address, size, index)) {
+    return xcp_page_[index] == working_page ? segment->working + (address - segment->address) : nullptr;
+  }
+  return configuration_.memory.find(extension, address, size, Access::read_write);
 }
 
 void Slave::write_memory(std::uint8_t* destination, std::span<const std::uint8_t> bytes) const {
@@ -129,6 +167,7 @@ void Slave::write_memory(std::uint8_t* destination, std::span<const std::uint8_t
 
 void Slave::reset_session() {
   stop_all_daq();
+  xcp_page_.fill(working_page);
   mta_ = {};
   seed_length_ = 0;
   seed_sent_ = 0;

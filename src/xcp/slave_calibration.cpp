@@ -16,8 +16,7 @@ Slave::Result Slave::download(PacketReader& request, PacketWriter&) {
   }
   // The first packet of a sequence that DOWNLOAD_NEXT completes (master block mode).
   if (count > configuration_.download_buffer.size()) return fail(Error::out_of_range);
-  if (mta_.points_to_identification ||
-      configuration_.memory.find(mta_.extension, mta_.address, count, Access::read_write) == nullptr) {
+  if (mta_.points_to_identification || writable_memory(mta_.extension, mta_.address, count) == nullptr) {
     return fail(Error::access_denied);
   }
   const std::span<const std::uint8_t> data = request.bytes(room);
@@ -74,7 +73,7 @@ Slave::Result Slave::modify_bits(PacketReader& request, PacketWriter&) {
   const std::uint16_t xor_mask = request.u16();
   if (shift > 16) return fail(Error::out_of_range);  // the masks must stay inside the 32 bits
   if (mta_.points_to_identification) return fail(Error::access_denied);
-  std::uint8_t* target = configuration_.memory.find(mta_.extension, mta_.address, 4, Access::read_write);
+  std::uint8_t* target = writable_memory(mta_.extension, mta_.address, 4);
   if (target == nullptr) return fail(Error::access_denied);
   std::uint32_t value = 0;
   for (std::size_t byte = 0; byte < 4; ++byte) value |= static_cast<std::uint32_t>(target[byte]) << (8U * byte);

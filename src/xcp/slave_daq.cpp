@@ -136,7 +136,7 @@ Slave::Result Slave::write_daq_entry(std::uint8_t bit_offset, std::uint8_t size,
   if (bit_offset != no_bit_offset || size == 0 || size > configuration_.max_dto - pid_size - timestamp_size) {
     return fail(Error::out_of_range);
   }
-  const std::uint8_t* memory = configuration_.memory.find(extension, address, size, Access::read_only);
+  const std::uint8_t* memory = readable_memory(extension, address, size);
   if (memory == nullptr) return fail(Error::access_denied);
   configuration_.daq.entries[daq_pointer_entry_++] = {memory, address, extension, size};
   return ok;

@@ -169,7 +169,7 @@ Slave::Result Slave::build_checksum(PacketReader& request, PacketWriter& respons
     return fail(Error::out_of_range);
   }
   if (mta_.points_to_identification) return fail(Error::access_denied);
-  const std::uint8_t* block = configuration_.memory.find(mta_.extension, mta_.address, size, Access::read_only);
+  const std::uint8_t* block = readable_memory(mta_.extension, mta_.address, size);
   if (block == nullptr) return fail(Error::access_denied);
   mta_.address += size;
   response.u8(static_cast<std::uint8_t>(type)).u8(0).u8(0).u32(checksum(type, {block, size}));

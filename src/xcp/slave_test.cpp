@@ -77,8 +77,10 @@ class SlaveFixture : public ::testing::Test {
   SlaveConfiguration make_configuration(std::uint8_t protected_resources = 0, bool with_user_command = true) {
     for (std::size_t byte = 0; byte < measurements.size(); ++byte) measurements[byte] = static_cast<std::uint8_t>(byte);
     parameters.fill(0xAA);
+    for (std::size_t byte = 0; byte < working.size(); ++byte) working[byte] = static_cast<std::uint8_t>(byte + 1);
     return {
         .memory = MemoryMap{regions},
+        .segments = segments,
         .max_cto = 16,
         .max_dto = 1024,
         .identification = "duet_test",
@@ -105,6 +107,16 @@ class SlaveFixture : public ::testing::Test {
                    .memory = parameters.data(),
                    .access = Access::read_write}};
   static constexpr std::array<std::uint8_t, 4> a2l{'A', '2', 'L', '!'};
+  // A calibration segment of 8 bytes at 0x3000: working page 01 .. 08, reference page 10 .. 17.
+  std::array<std::uint8_t, 8> working{};
+  static constexpr std::array<std::uint8_t, 8> reference{0x10, 0x11, 0x12, 0x13, 0x14, 0x15, 0x16, 0x17};
+  const std::uint8_t* volatile ecu_page = working.data();
+  std::array<CalibrationSegment, 1> segments{CalibrationSegment{.name = "tuning",
+                                                                .address = 0x3000,
+                                                                .size = 8,
+                                                                .working = working.data(),
+                                                                .reference = reference.data(),
+                                                                .ecu_page = &ecu_page}};
   static constexpr std::array<EventChannel, 2> events{EventChannel{.name = "1 ms", .time_cycle = 1, .time_unit = 6},
                                                       EventChannel{.name = "uart", .priority = 2}};
   std::array<DaqList, 4> daq_lists{};
@@ -254,6 +266,43 @@ INSTANTIATE_TEST_SUITE_P(
                  {"F7 14 5B 58 59 5E 5F 5C 5D 52 53 50 51 56 57 54", "FF 04"},  // 14 of 20 key bytes: still locked
                  {"F7 06 55 4A 4B 48 49 4E", "FF 00"}},
                 resource::daq},
+        Session{"paging",
+                {{connect, connected},
+                 {"E9", "FF 01 00"},
+                 {"E8 00 00 00 00", "FF 00 00 00 00 30 00 00"},
+                 {"E8 00 00 01 00", "FF 00 00 00 08 00 00 00"},
+                 {"E8 01 00 00 00", "FF 02 00 00 00 00"},
+                 {"E8 02 00 00 00", "FE 22"},
+                 {"E8 00 01 00 00", "FE 28"},
+                 {"E7 00 00 00", "FF 3F 00"},
+                 {"E7 00 00 01", "FF 0F 00"},
+                 {"E7 00 00 02", "FE 26"},
+                 {"EA 01 00", "FF 00 00 00"},
+                 {"EA 03 00", "FE 27"},
+                 {"F4 02 00 00 00 30 00 00", "FF 01 02"},
+                 {"EB 02 00 01", "FF"},  // XCP sees the reference page
+                 {"F4 02 00 00 00 30 00 00", "FF 10 11"},
+                 {"ED 01 00 00 00 30 00 00 55", "FE 24"},  // which is read-only
+                 {"EA 02 00", "FF 00 00 01"},
+                 {"EA 01 00", "FF 00 00 00"},  // the model still reads the working page
+                 {"EB 01 00 01", "FF"},
+                 {"EA 01 00", "FF 00 00 01"},
+                 {"EB 83 00 00", "FF"},  // all segments, ECU and XCP, back to the working page
+                 {"F4 02 00 00 00 30 00 00", "FF 01 02"},
+                 {"ED 02 00 00 00 30 00 00 55 66", "FF"},
+                 {"F4 02 00 00 00 30 00 00", "FF 55 66"},
+                 {"E4 00 01 00 00", "FF"},  // reset the working page to the reference
+                 {"F4 02 00 00 00 30 00 00", "FF 10 11"},
+                 {"E4 00 00 00 01", "FE 23"},
+                 {"E4 00 02 00 00", "FE 26"},
+                 {"E4 01 01 01 00", "FE 28"},
+                 {"EB 04 00 00", "FE 27"},
+                 {"EB 01 01 00", "FE 28"},
+                 {"EB 01 00 02", "FE 26"},
+                 {"E6 01 00", "FE 27"},
+                 {"E6 00 00", "FF"},
+                 {"E5 00 00", "FF 00 00"},
+                 {"E5 00 05", "FE 28"}}},
         Session{"daq_information",
                 {{connect, connected},
                  {"DA", "FF 93 04 00 02 00 00 00"},
@@ -402,6 +451,15 @@ TEST_F(SlaveFixture, ASampleThatDoesNotFitIsDroppedWholeCountedAndAnnounced) {
   slave.on_event(1);
   slave.on_event(1);  // the next sample that fits comes after EV_DAQ_OVERLOAD
   EXPECT_EQ(drain(small_queue), (std::vector<std::string>{"FD 06", "02 AA"}));
+}
+
+TEST_F(SlaveFixture, TheEcuPageIsThePointerTheModelReadsThrough) {
+  const SlaveConfiguration configuration = make_configuration();
+  Slave slave{configuration};
+  run(slave, {"FF 00", "EB 01 00 01"});
+  EXPECT_EQ(ecu_page, reference.data());
+  run(slave, {"EB 81 00 00"});
+  EXPECT_EQ(ecu_page, working.data());
 }
 
 TEST_F(SlaveFixture, DisconnectStopsDaq) {

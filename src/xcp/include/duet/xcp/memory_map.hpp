@@ -23,6 +23,22 @@ struct MemoryRegion {
   Access access = Access::read_only;
 };
 
+// A calibration segment with two pages: page 0, the working page in RAM that XCP writes, and page 1, the reference
+// page (the values the firmware was built with), read-only. The model reads its parameters through `ecu_page`, a
+// pointer the slave sets to either page (SET_CAL_PAGE for the ECU); at its XCP address XCP sees the page it chose.
+struct CalibrationSegment {
+  std::string_view name;
+  std::uint8_t extension = 0;
+  std::uint32_t address = 0;
+  std::uint32_t size = 0;
+  std::uint8_t* working = nullptr;
+  const std::uint8_t* reference = nullptr;
+  const std::uint8_t* volatile* ecu_page = nullptr;  // optional: without it the model always reads the working page
+};
+
+inline constexpr std::uint8_t working_page = 0;
+inline constexpr std::uint8_t reference_page = 1;
+
 class MemoryMap {
  public:
   constexpr explicit MemoryMap(std::span<const MemoryRegion> regions) : regions_(regions) {}

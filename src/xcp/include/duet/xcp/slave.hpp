@@ -38,7 +38,8 @@ using AtomicWrite = void (*)(std::uint8_t* destination, std::span<const std::uin
 
 struct SlaveConfiguration {
   MemoryMap memory{{}};
-  std::uint8_t max_cto = 248;  // at most 255; a multiple of 8 suits every transport
+  std::span<const CalibrationSegment> segments;  // paged calibration memory, looked up before `memory`
+  std::uint8_t max_cto = 248;                    // at most 255; a multiple of 8 suits every transport
   std::uint16_t max_dto = 1024;
   std::string_view identification;    // GET_ID type 1: the A2L file's name without path and extension
   std::span<const std::uint8_t> a2l;  // GET_ID type 4: the A2L itself, if the firmware carries it
@@ -127,6 +128,15 @@ class Slave {
   Result download_max(PacketReader& request, PacketWriter& response);
   Result short_download(PacketReader& request, PacketWriter& response);
   Result modify_bits(PacketReader& request, PacketWriter& response);
+  // Paging commands (slave_paging.cpp).
+  Result set_cal_page(PacketReader& request, PacketWriter& response);
+  Result get_cal_page(PacketReader& request, PacketWriter& response);
+  Result get_pag_processor_info(PacketReader& request, PacketWriter& response);
+  Result get_segment_info(PacketReader& request, PacketWriter& response);
+  Result get_page_info(PacketReader& request, PacketWriter& response);
+  Result set_segment_mode(PacketReader& request, PacketWriter& response);
+  Result get_segment_mode(PacketReader& request, PacketWriter& response);
+  Result copy_cal_page(PacketReader& request, PacketWriter& response);
   // DAQ commands (slave_daq.cpp).
   Result free_daq(PacketReader& request, PacketWriter& response);
   Result alloc_daq(PacketReader& request, PacketWriter& response);
@@ -162,6 +172,15 @@ class Slave {
   void stop_all_daq();
   [[nodiscard]] std::size_t odt_payload(const DaqList& list, std::size_t odt_index) const;
 
+  // Memory at an XCP address: a calibration segment's page XCP chose, else a declared region; nullptr if neither
+  // holds all `size` bytes (readable, or writable).
+  [[nodiscard]] const std::uint8_t* readable_memory(std::uint8_t extension, std::uint32_t address,
+                                                    std::uint32_t size) const;
+  [[nodiscard]] std::uint8_t* writable_memory(std::uint8_t extension, std::uint32_t address, std::uint32_t size) const;
+  const CalibrationSegment* segment_at(std::uint8_t extension, std::uint32_t address, std::uint32_t size,
+                                       std::size_t& index) const;
+  static constexpr std::size_t max_segments = 16;
+
   Result read_at_mta(std::uint32_t count, PacketWriter& response);
   Result write_at_mta(std::span<const std::uint8_t> bytes);
   void write_memory(std::uint8_t* destination, std::span<const std::uint8_t> bytes) const;
@@ -190,6 +209,7 @@ class Slave {
   std::uint16_t daq_pointer_list_ = 0;
   std::uint16_t daq_pointer_entry_ = 0;  // absolute entry index
   std::uint16_t daq_pointer_end_ = 0;    // one past the ODT's last entry; equal to the pointer when not set
+  std::array<std::uint8_t, max_segments> xcp_page_{};  // per segment: the page XCP reads and writes
   std::atomic<bool> overload_pending_{false};
   std::atomic<std::uint32_t> overloads_{0};
   std::array<std::uint8_t, max_packet + 1> response_{};
