@@ -4,7 +4,9 @@ function(duet_target_warnings target)
     -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion -Wshadow -Wcast-align -Wnon-virtual-dtor
     -Wold-style-cast -Woverloaded-virtual -Wnull-dereference -Wimplicit-fallthrough -Werror
     # Tables are written with designated initializers that leave defaulted members out; GCC 12 warns about that.
-    -Wno-missing-field-initializers
+    -Wno-missing-field-initializers)
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
     # GCC 12 reports impossible overlaps in std::string's inlined copies at -O3 (GCC bug 105329).
-    -Wno-restrict)
+    target_compile_options(${target} PRIVATE -Wno-restrict)
+  endif()
 endfunction()

@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 scripts/setup.sh
 
-presets=(host host-release m4-qemu m4-stm32mp15 a7-linux)
+presets=(host host-release m4-qemu m4-stm32mp15 a7-linux fuzz)
 mkdir -p build
 for preset in "${presets[@]}"; do
   echo "== configure and build: $preset"
