@@ -235,6 +235,10 @@ Slave::Result Slave::start_stop_daq_list(PacketReader& request, PacketWriter& re
       }
       if (odt_payload(daq_list, odt) > configuration_.max_dto) return fail(Error::daq_config);
     }
+    for (std::size_t odt = 0; odt < daq_list.odt_count; ++odt) {
+      configuration_.daq.odts[daq_list.first_odt + odt].packet_size =
+          static_cast<std::uint16_t>(odt_payload(daq_list, odt));
+    }
   }
   switch (mode) {
     case 0: daq_list.running.store(false, std::memory_order_relaxed); break;
@@ -325,20 +329,22 @@ void Slave::on_event(std::uint16_t event) {
 
     const bool announce_overload = overload_pending_.load(std::memory_order_relaxed);
     constexpr std::size_t overload_packet = 2;
+    const Odt* const first = &daq.odts[list.first_odt];
     std::size_t record_bytes = announce_overload ? TransmitQueue::record_header + overload_packet : 0;
     for (std::size_t odt = 0; odt < list.odt_count; ++odt)
-      record_bytes += TransmitQueue::record_header + odt_payload(list, odt);
-    const std::uint32_t now = configuration_.timestamp != nullptr ? configuration_.timestamp() : 0;
-    const bool queued = configuration_.queue->push(record_bytes, headroom, [&](TransmitQueue::Appender& out) {
+      record_bytes += TransmitQueue::record_header + first[odt].packet_size;
+    const bool stamped = (list.mode & daq_mode::timestamp) != 0;
+    const std::uint32_t now = stamped && configuration_.timestamp != nullptr ? configuration_.timestamp() : 0;
+    const bool queued = configuration_.queue->push(record_bytes, headroom, [&](auto& out) {
       if (announce_overload)
         out.packet(overload_packet).u8(pid::event).u8(static_cast<std::uint8_t>(EventCode::daq_overload));
       for (std::size_t odt = 0; odt < list.odt_count; ++odt) {
-        const Odt& target = daq.odts[list.first_odt + odt];
-        out.packet(odt_payload(list, odt)).u8(static_cast<std::uint8_t>(list.first_odt + odt));
-        if (odt == 0 && (list.mode & daq_mode::timestamp) != 0) out.u32(now);
-        for (std::size_t entry = 0; entry < target.entry_count; ++entry) {
-          const OdtEntry& source = daq.entries[target.first_entry + entry];
-          out.bytes(source.memory, source.size);
+        const Odt& target = first[odt];
+        out.packet(target.packet_size).u8(static_cast<std::uint8_t>(list.first_odt + odt));
+        if (odt == 0 && stamped) out.u32(now);
+        const OdtEntry* entry = &daq.entries[target.first_entry];
+        for (const OdtEntry* const end = entry + target.entry_count; entry != end; ++entry) {
+          out.bytes(entry->memory, entry->size);
         }
       }
     });

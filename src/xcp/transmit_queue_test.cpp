@@ -20,9 +20,8 @@ void unlock_mutex(std::uint32_t) { queue_mutex.unlock(); }
 constexpr QueueLock mutex_lock{lock_mutex, unlock_mutex};
 
 bool push_packet(TransmitQueue& queue, std::span<const std::uint8_t> packet, std::size_t headroom = 0) {
-  return queue.push(packet.size() + TransmitQueue::record_header, headroom, [&](TransmitQueue::Appender& out) {
-    out.packet(packet.size()).bytes(packet.data(), packet.size());
-  });
+  return queue.push(packet.size() + TransmitQueue::record_header, headroom,
+                    [&](auto& out) { out.packet(packet.size()).bytes(packet.data(), packet.size()); });
 }
 
 TEST(TransmitQueue, KeepsPacketsInOrderAcrossTheRingsEnd) {

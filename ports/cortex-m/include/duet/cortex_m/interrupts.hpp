@@ -41,15 +41,22 @@ constexpr unsigned grouped_priority(unsigned group, unsigned sub, unsigned sub_p
 inline void enable_interrupts() { asm volatile("cpsie i" ::: "memory"); }
 inline void disable_interrupts() { asm volatile("cpsid i" ::: "memory"); }
 
-// Masks every interrupt while it exists and restores the previous mask when it goes: nests, and works in handlers.
-// Keep what it guards short; it delays every interrupt.
+// Masks every interrupt and returns the mask as it was, for restore_interrupts(): nests, and works in handlers. As
+// plain functions they also serve as a lock that libraries take by function pointer (the XCP transmit queue's).
+inline std::uint32_t mask_interrupts() {
+  std::uint32_t saved_primask;
+  asm volatile("mrs %0, primask\n cpsid i" : "=r"(saved_primask)::"memory");
+  return saved_primask;
+}
+inline void restore_interrupts(std::uint32_t saved_primask) {
+  asm volatile("msr primask, %0" ::"r"(saved_primask) : "memory");
+}
+
+// mask_interrupts() for as long as it exists. Keep what it guards short; it delays every interrupt.
 class InterruptMask {
  public:
-  InterruptMask() {
-    asm volatile("mrs %0, primask" : "=r"(saved_primask_));
-    disable_interrupts();
-  }
-  ~InterruptMask() { asm volatile("msr primask, %0" ::"r"(saved_primask_) : "memory"); }
+  InterruptMask() : saved_primask_(mask_interrupts()) {}
+  ~InterruptMask() { restore_interrupts(saved_primask_); }
   InterruptMask(const InterruptMask&) = delete;
   InterruptMask& operator=(const InterruptMask&) = delete;
 

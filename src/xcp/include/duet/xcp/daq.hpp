@@ -28,6 +28,7 @@ struct OdtEntry {
 struct Odt {
   std::uint16_t first_entry = 0;
   std::uint8_t entry_count = 0;
+  std::uint16_t packet_size = 0;  // PID, timestamp if any, entries: fixed when its list starts
 };
 
 struct DaqList {

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <span>
 
 namespace duet::xcp {
@@ -37,8 +38,13 @@ class TransmitQueue {
     Appender& u32(std::uint32_t value) {
       return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
     }
+    // Copies in at most two runs, before and after the ring's end.
     Appender& bytes(const std::uint8_t* values, std::size_t count) {
-      for (std::size_t byte = 0; byte < count; ++byte) u8(values[byte]);
+      const std::size_t to_end = ring_.size() - position_;
+      const std::size_t first = count < to_end ? count : to_end;
+      std::memcpy(ring_.data() + position_, values, first);
+      std::memcpy(ring_.data(), values + first, count - first);
+      position_ = count < to_end ? position_ + count : count - first;
       return *this;
     }
     // Starts the record of a packet of `size` bytes; the caller then writes exactly that many.
@@ -50,10 +56,42 @@ class TransmitQueue {
     std::size_t position_;
   };
 
+  // The same for records that lie in one piece, the usual case: plain stores, no wrap checks.
+  class LinearAppender {
+   public:
+    explicit LinearAppender(std::uint8_t* at) : at_(at) {}
+    LinearAppender& u8(std::uint8_t value) {
+      *at_++ = value;
+      return *this;
+    }
+    LinearAppender& u16(std::uint16_t value) {
+      return u8(static_cast<std::uint8_t>(value)).u8(static_cast<std::uint8_t>(value >> 8U));
+    }
+    LinearAppender& u32(std::uint32_t value) {
+      return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
+    }
+    LinearAppender& bytes(const std::uint8_t* values, std::size_t count) {
+      switch (count) {  // constant sizes become single loads and stores
+        case 1: *at_ = *values; break;
+        case 2: std::memcpy(at_, values, 2); break;
+        case 4: std::memcpy(at_, values, 4); break;
+        case 8: std::memcpy(at_, values, 8); break;
+        default: std::memcpy(at_, values, count); break;
+      }
+      at_ += count;
+      return *this;
+    }
+    LinearAppender& packet(std::size_t size) { return u16(static_cast<std::uint16_t>(size)); }
+
+   private:
+    std::uint8_t* at_;
+  };
+
   TransmitQueue(std::span<std::uint8_t> storage, QueueLock lock) : ring_(storage), lock_(lock) {}
 
   // Adds packets whose records take `record_bytes` in all (each packet's size + record_header) if they fit with
-  // `headroom` bytes to spare; `fill(Appender&)` writes exactly those records. False, with nothing added, otherwise.
+  // `headroom` bytes to spare; `fill(out)` writes exactly those records through `out`, an Appender or, when the
+  // records lie in one piece, a LinearAppender (so `fill` takes `auto&`). False, with nothing added, otherwise.
   // Interrupt-safe; never waits.
   template <typename Fill>
   bool push(std::size_t record_bytes, std::size_t headroom, Fill&& fill) {
@@ -62,8 +100,14 @@ class TransmitQueue {
     const std::size_t used = head - tail_.load(std::memory_order_acquire);
     const bool fits = record_bytes + headroom <= ring_.size() - used;
     if (fits) {
-      Appender appender{ring_, head % ring_.size()};
-      fill(appender);
+      const std::size_t position = head % ring_.size();
+      if (position + record_bytes <= ring_.size()) {
+        LinearAppender appender{ring_.data() + position};
+        fill(appender);
+      } else {
+        Appender appender{ring_, position};
+        fill(appender);
+      }
       head_.store(head + record_bytes, std::memory_order_release);
     }
     if (lock_.unlock != nullptr) lock_.unlock(saved);
