@@ -34,5 +34,3 @@ void lock_step_ticks_of_an_empty_model(benchmark::State& state) {
 BENCHMARK(lock_step_ticks_of_an_empty_model);
 
 }  // namespace
-
-BENCHMARK_MAIN();

@@ -17,6 +17,7 @@ namespace duet::xcp::host {
 namespace {
 
 constexpr std::size_t max_packet = 0xFFFF;
+constexpr std::chrono::microseconds spin{200};
 
 std::string system_error(const char* what) { return std::string{what} + ": " + std::strerror(errno); }
 
@@ -101,6 +102,21 @@ void MasterChannel::take(std::span<const std::uint8_t> bytes) {
 Result<std::optional<std::vector<std::uint8_t>>> MasterChannel::receive(std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   std::array<std::uint8_t, 65536> buffer{};
+  // Answers on localhost come within tens of microseconds: ask again for a short while before sleeping in poll,
+  // which would add the scheduler's wake-up time to every round trip.
+  const auto spin_until =
+      std::chrono::steady_clock::now() + std::min<std::chrono::steady_clock::duration>(spin, timeout);
+  while (packets_.empty() && std::chrono::steady_clock::now() < spin_until) {
+    const ssize_t received = ::recv(socket_, buffer.data(), buffer.size(), MSG_DONTWAIT);
+    if (received > 0) {
+      if (protocol_ == Protocol::udp) decoder_.reset();
+      take(std::span{buffer}.first(static_cast<std::size_t>(received)));
+    } else if (received == 0 && protocol_ == Protocol::tcp) {
+      return Failure{"the slave closed the connection"};
+    } else if (received < 0 && errno != EAGAIN && errno != EINTR) {
+      return Failure{system_error("receive")};
+    }
+  }
   while (packets_.empty()) {
     const auto left =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());

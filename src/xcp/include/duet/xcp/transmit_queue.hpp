@@ -122,6 +122,10 @@ class TransmitQueue {
     return head_.load(std::memory_order_acquire) == tail_.load(std::memory_order_relaxed);
   }
   [[nodiscard]] std::size_t capacity() const { return ring_.size(); }
+  // Bytes a producer could add now (a snapshot: the consumer may free more meanwhile).
+  [[nodiscard]] std::size_t free_bytes() const {
+    return ring_.size() - (head_.load(std::memory_order_relaxed) - tail_.load(std::memory_order_acquire));
+  }
 
  private:
   std::span<std::uint8_t> ring_;

@@ -1,0 +1,4 @@
+// The main function of every benchmark program.
+#include <benchmark/benchmark.h>
+
+BENCHMARK_MAIN();
