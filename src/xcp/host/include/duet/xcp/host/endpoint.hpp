@@ -15,6 +15,7 @@ struct Endpoint {
   Protocol protocol = Protocol::tcp;
   std::string host = "127.0.0.1";
   std::uint16_t port = 5555;  // the port common XCP tools use
+  bool operator==(const Endpoint&) const = default;
 };
 
 // Parses "tcp://host:port" or "udp://host:port"; the message of a failure quotes the text and says what is wrong.
