@@ -3,6 +3,7 @@
 #include <ostream>
 
 #include "subcommand.hpp"
+#include "xcp_command.hpp"
 
 namespace duet::cli {
 namespace {
@@ -17,7 +18,7 @@ Action planned(CLI::App& command) {
 }
 
 constexpr Subcommand table[] = {
-    {"xcp", "Talk XCP to a target: connect, read and write memory, record signals with DAQ", planned<4>},
+    {"xcp", "Talk XCP to a target: connect, read and write memory, record signals with DAQ", define_xcp_command},
     {"sim", "Simulate a model against a plant model on the PC", planned<7>},
     {"gen", "Generate freestanding C++, the A2L file and the task table from a model", planned<7>},
     {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", planned<6>},

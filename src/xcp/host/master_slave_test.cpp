@@ -10,101 +10,15 @@
 #include <thread>
 
 #include "duet/xcp/host/master.hpp"
-#include "duet/xcp/host/slave_server.hpp"
+#include "test_target.hpp"
 
 namespace duet::xcp::host {
 namespace {
 
-std::mutex queue_mutex;
-std::uint32_t lock_queue() {
-  queue_mutex.lock();
-  return 0;
-}
-void unlock_queue(std::uint32_t) { queue_mutex.unlock(); }
-
-std::size_t make_seed(std::uint8_t, std::span<std::uint8_t> seed) {
-  for (std::size_t byte = 0; byte < 8; ++byte) seed[byte] = static_cast<std::uint8_t>(0xA0 + byte);
-  return 8;
-}
-bool key_is_valid(std::uint8_t, std::span<const std::uint8_t> seed, std::span<const std::uint8_t> key) {
-  if (key.size() != seed.size()) return false;
-  for (std::size_t byte = 0; byte < key.size(); ++byte) {
-    if (key[byte] != static_cast<std::uint8_t>(~seed[byte])) return false;
-  }
-  return true;
-}
-std::vector<std::uint8_t> compute_key(std::uint8_t, std::span<const std::uint8_t> seed) {
-  std::vector<std::uint8_t> key;
-  for (std::uint8_t byte : seed) key.push_back(static_cast<std::uint8_t>(~byte));
-  return key;
-}
-
-// The firmware's side, on the PC: signals, parameters with two pages, DAQ storage, and the server.
-struct Target {
-  struct Signals {
-    std::uint32_t counter;
-    std::uint16_t twice;
-    std::uint8_t slow;
-  };
-  Signals signals{};
-  std::array<std::uint8_t, 8> parameters{};
-  std::array<std::uint8_t, 8> reference{1, 2, 3, 4, 5, 6, 7, 8};
-  const std::uint8_t* volatile ecu_page = parameters.data();
-  std::array<MemoryRegion, 1> regions{MemoryRegion{.name = "signals",
-                                                   .address = 0x1000,
-                                                   .size = sizeof(Signals),
-                                                   .memory = reinterpret_cast<std::uint8_t*>(&signals)}};
-  std::array<CalibrationSegment, 1> segments{CalibrationSegment{.name = "parameters",
-                                                                .address = 0x2000,
-                                                                .size = 8,
-                                                                .working = parameters.data(),
-                                                                .reference = reference.data(),
-                                                                .ecu_page = &ecu_page}};
-  std::array<EventChannel, 2> events{EventChannel{.name = "1 ms"}, EventChannel{.name = "10 ms"}};
-  std::array<DaqList, 4> lists{};
-  std::array<Odt, 8> odts{};
-  std::array<OdtEntry, 16> entries{};
-  std::array<std::uint8_t, 1 << 16> queue_storage{};
-  std::array<std::uint8_t, 256> download_buffer{};
-  TransmitQueue queue{queue_storage, {lock_queue, unlock_queue}};
-  SlaveConfiguration configuration{.memory = MemoryMap{regions},
-                                   .segments = segments,
-                                   .max_cto = 32,
-                                   .max_dto = 64,
-                                   .identification = "duet_target",
-                                   .protected_resources = resource::daq,
-                                   .seed_and_key = {make_seed, key_is_valid},
-                                   .download_buffer = download_buffer,
-                                   .events = events,
-                                   .daq = {lists, odts, entries},
-                                   .queue = &queue};
-  Slave slave{configuration};
-  std::mutex model_mutex;  // the model's tasks run under it; the server's commands too
-  SlaveServer server{slave, queue, [this](const std::function<void()>& work) {
-                       const std::lock_guard lock{model_mutex};
-                       work();
-                     }};
-
-  // One model step: the 1 ms event every step, the 10 ms event every second step.
-  void step(std::uint32_t number) {
-    {
-      const std::lock_guard lock{model_mutex};
-      signals.counter = number;
-      signals.twice = static_cast<std::uint16_t>(2 * number);
-      slave.on_event(0);
-      if (number % 2 == 0) {
-        signals.slow = static_cast<std::uint8_t>(number / 2);
-        slave.on_event(1);
-      }
-    }
-    server.notify();
-  }
-};
-
 class MasterSlave : public ::testing::TestWithParam<Protocol> {};
 
 TEST_P(MasterSlave, InteroperateOverLocalhost) {
-  Target target;
+  TestTarget target;
   ASSERT_TRUE(target.server.start({.protocol = GetParam()}).ok());
   const Endpoint endpoint{GetParam(), "127.0.0.1", target.server.port()};
   auto channel = MasterChannel::open(endpoint, std::chrono::milliseconds{1000});
@@ -187,7 +101,7 @@ INSTANTIATE_TEST_SUITE_P(Transports, MasterSlave, ::testing::Values(Protocol::tc
                          });
 
 TEST(SlaveServer, RefusesASecondMasterAndEndsTheSessionOfOneThatLeaves) {
-  Target target;
+  TestTarget target;
   ASSERT_TRUE(target.server.start({}).ok());
   const Endpoint endpoint{Protocol::tcp, "127.0.0.1", target.server.port()};
   {

@@ -1,0 +1,152 @@
+// `duet xcp` against a slave running in this process (TestTarget), as a user would type it.
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <atomic>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "command_line.hpp"
+#include "test_target.hpp"
+
+namespace duet::cli {
+namespace {
+
+using namespace duet::xcp::host;
+
+struct Outcome {
+  ExitCode exit_code;
+  std::string out;
+  std::string err;
+};
+
+Outcome run(std::vector<std::string> arguments) {
+  std::ostringstream out;
+  std::ostringstream err;
+  const ExitCode exit_code = run_command_line(arguments, {out, err});
+  return {exit_code, out.str(), err.str()};
+}
+
+class XcpCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(target.server.start({}).ok());
+    endpoint = "tcp://127.0.0.1:" + std::to_string(target.server.port());
+    a2l_file =
+        (std::filesystem::temp_directory_path() / ("duet_xcp_command_" + std::to_string(::getpid()) + ".a2l")).string();
+    std::ofstream{a2l_file} << write_a2l(TestTarget::a2l({Protocol::tcp, "127.0.0.1", target.server.port()}));
+  }
+  void TearDown() override { std::filesystem::remove(a2l_file); }
+
+  TestTarget target{0};  // nothing locked
+  std::string endpoint;
+  std::string a2l_file;
+};
+
+TEST_F(XcpCommand, InfoShowsTheSlave) {
+  const Outcome text = run({"xcp", "info", "--connect", endpoint});
+  EXPECT_EQ(text.exit_code, ExitCode::success) << text.err;
+  EXPECT_NE(text.out.find("slave        duet_target\nMAX_CTO      32\nMAX_DTO      64\n"), std::string::npos)
+      << text.out;
+  const Outcome json = run({"xcp", "info", "--a2l", a2l_file, "--json"});  // the A2L says where the slave is
+  ASSERT_EQ(json.exit_code, ExitCode::success) << json.err;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["max_dto"], 64);
+}
+
+TEST_F(XcpCommand, ListsTheA2l) {
+  const Outcome list = run({"xcp", "list", "--a2l", a2l_file, "--json"});
+  ASSERT_EQ(list.exit_code, ExitCode::success) << list.err;
+  const nlohmann::json entries = nlohmann::json::parse(list.out);
+  ASSERT_EQ(entries.size(), 6U);
+  EXPECT_EQ(entries[0]["name"], "counter");
+  EXPECT_EQ(entries[4]["unit"], "V");
+  const Outcome text = run({"xcp", "list", "--a2l", a2l_file});
+  EXPECT_NE(text.out.find("scaled                  characteristic UWORD        0x00002004  a scaled word"),
+            std::string::npos)
+      << text.out;
+}
+
+TEST_F(XcpCommand, WritesAndReadsByNameWithinLimits) {
+  Outcome written = run({"xcp", "write", "--a2l", a2l_file, "gain=2.5", "scaled=7.5", "flags=9"});
+  ASSERT_EQ(written.exit_code, ExitCode::success) << written.err;
+  EXPECT_EQ(target.parameters, (std::array<std::uint8_t, 8>{0x00, 0x00, 0x20, 0x40, 0xEE, 0x02, 9, 9}));
+  const Outcome read = run({"xcp", "read", "--a2l", a2l_file, "--json", "gain", "scaled", "flags", "0x2000:2"});
+  ASSERT_EQ(read.exit_code, ExitCode::success) << read.err;
+  const nlohmann::json values = nlohmann::json::parse(read.out);
+  EXPECT_EQ(values["gain"], 2.5);
+  EXPECT_DOUBLE_EQ(values["scaled"].get<double>(), 7.5);
+  EXPECT_EQ(values["flags"], nlohmann::json::array({9, 9}));
+  EXPECT_EQ(values["0x2000:2"], "00 00");
+
+  const Outcome too_big = run({"xcp", "write", "--a2l", a2l_file, "scaled=11"});
+  EXPECT_EQ(too_big.exit_code, ExitCode::failure);
+  EXPECT_EQ(too_big.err, "duet xcp: scaled: 11 is outside 0 .. 10 V\n");
+  const Outcome unknown = run({"xcp", "read", "--a2l", a2l_file, "nothing"});
+  EXPECT_EQ(unknown.exit_code, ExitCode::failure);
+  EXPECT_EQ(unknown.err, "duet xcp: 'nothing' is neither a MEASUREMENT nor a CHARACTERISTIC in the A2L\n");
+  const Outcome denied = run({"xcp", "read", "--connect", endpoint, "0x9000:4"});
+  EXPECT_EQ(denied.err, "duet xcp: UPLOAD: ERR_ACCESS_DENIED (0x24)\n");
+}
+
+TEST_F(XcpCommand, RecordsSignalsToCsv) {
+  std::atomic<bool> stepping{true};
+  std::thread model{[&] {
+    for (std::uint32_t number = 1; stepping; ++number) {
+      target.step(number);
+      std::this_thread::sleep_for(std::chrono::microseconds{500});
+    }
+  }};
+  const std::string csv_file = a2l_file + ".csv";
+  const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--signal", "twice",
+                                "--event", "1 ms", "--duration", "0.3", "--output", csv_file});
+  stepping = false;
+  model.join();
+  ASSERT_EQ(recorded.exit_code, ExitCode::success) << recorded.err;
+  std::ifstream csv{csv_file};
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "time_s,counter,twice");
+  std::size_t rows = 0;
+  std::string row;
+  while (std::getline(csv, row)) {
+    const std::size_t first = row.find(',');
+    const std::size_t second = row.find(',', first + 1);
+    const double counter = std::stod(row.substr(first + 1, second - first - 1));
+    EXPECT_EQ(std::stod(row.substr(second + 1)), 2 * counter) << row;
+    ++rows;
+  }
+  std::filesystem::remove(csv_file);
+  EXPECT_GT(rows, 50U);
+  EXPECT_NE(recorded.err.find("recorded " + std::to_string(rows) +
+                              " samples of 2 signals on event '1 ms' (0 overloads, 0 lost"),
+            std::string::npos)
+      << recorded.err;
+  EXPECT_FALSE(target.slave.connected());  // the command disconnected when done
+}
+
+TEST_F(XcpCommand, ChecksumAndPages) {
+  const Outcome checksum = run({"xcp", "checksum", "--connect", endpoint, "0x2000", "8"});
+  ASSERT_EQ(checksum.exit_code, ExitCode::success) << checksum.err;
+  EXPECT_EQ(checksum.out, "0x0000313E\n");  // CRC16-CCITT of eight zero bytes
+  const Outcome switched = run({"xcp", "page", "--connect", endpoint, "--segment", "0", "--page", "1", "--ecu"});
+  ASSERT_EQ(switched.exit_code, ExitCode::success) << switched.err;
+  EXPECT_EQ(switched.out, "segment 0: ECU page 1, XCP page 0 (0 working, 1 reference)\n");
+  EXPECT_EQ(target.ecu_page, target.reference.data());
+  const Outcome bad_segment = run({"xcp", "page", "--connect", endpoint, "--segment", "3"});
+  EXPECT_EQ(bad_segment.err, "duet xcp: GET_CAL_PAGE: ERR_SEGMENT_NOT_VALID (0x28)\n");
+}
+
+TEST_F(XcpCommand, UsageAndConnectionErrorsAreClear) {
+  EXPECT_EQ(run({"xcp", "info"}).err, "duet xcp: no slave to talk to: give --connect tcp://host:port or --a2l FILE\n");
+  EXPECT_EQ(run({"xcp", "info", "--connect", "ftp://x:1"}).err,
+            "duet xcp: 'ftp://x:1': unknown scheme (expected tcp://host:port or udp://host:port)\n");
+  EXPECT_EQ(run({"xcp", "list", "--a2l", "/nonexistent.a2l"}).err, "duet xcp: /nonexistent.a2l: cannot be read\n");
+  EXPECT_EQ(run({"xcp"}).exit_code, ExitCode::usage);
+  EXPECT_EQ(run({"xcp", "frobnicate"}).exit_code, ExitCode::usage);
+}
+
+}  // namespace
+}  // namespace duet::cli
