@@ -33,6 +33,12 @@ class RealTimePort {
 
   // An interrupt task's trigger fires now; callable from any thread. Blocks while another handler runs.
   void raise(std::size_t task);
+  // Runs `work` while no handler runs, as the lowest priority on the real-time core would (e.g. XCP commands).
+  template <typename Work>
+  void exclusive(Work&& work) {
+    const std::lock_guard lock{mutex_};
+    work();
+  }
   // Whether the timer thread got SCHED_FIFO (root, or CAP_SYS_NICE, or an rtprio limit).
   [[nodiscard]] bool real_time_priority() const { return real_time_priority_; }
 
