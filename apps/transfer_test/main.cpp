@@ -55,6 +55,9 @@ std::uint32_t lock_queue() {
 }
 void unlock_queue(std::uint32_t) { queue_mutex.unlock(); }
 
+// The executive's clock for DAQ timestamps, in microseconds (the slave's default timestamp unit).
+std::uint32_t microseconds() { return static_cast<std::uint32_t>(duet::host::RealTimePort::monotonic_ns() / 1000U); }
+
 // The slave's side: memory declared to XCP, DAQ storage, the queue, the server.
 struct Target {
   std::array<xcp::MemoryRegion, 2> regions{xcp::MemoryRegion{.name = "signals",
@@ -78,7 +81,8 @@ struct Target {
                                         .download_buffer = download_buffer,
                                         .events = events,
                                         .daq = {lists, odts, entries},
-                                        .queue = &queue};
+                                        .queue = &queue,
+                                        .timestamp = microseconds};
   xcp::Slave slave{configuration};
 };
 
@@ -149,6 +153,7 @@ int main() {
 
   // Samples before the play-out began repeat the initial output (0); the play-out itself is the table, once per step.
   std::vector<std::uint16_t> recorded;
+  std::vector<std::uint32_t> timestamps;
   bool started = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds{30};
   while (recorded.size() < table_size && std::chrono::steady_clock::now() < deadline) {
@@ -158,7 +163,10 @@ int main() {
       const auto value = static_cast<std::uint16_t>(sample.bytes[0] | (sample.bytes[1] << 8U));
       if (!started && value == table[0]) started = true;
       if (!started) continue;
-      if (recorded.size() < table_size) recorded.push_back(value);
+      if (recorded.size() < table_size) {
+        recorded.push_back(value);
+        timestamps.push_back(sample.timestamp);
+      }
     }
   }
   (void)master.stop_daq();
@@ -169,8 +177,13 @@ int main() {
 
   std::size_t equal = 0;
   for (std::size_t index = 0; index < recorded.size(); ++index) equal += recorded[index] == table[index] ? 1U : 0U;
+  // The steps' timestamps: one period apart on average; the executive's clock stamped them, not the master's arrival.
+  const double mean_step_us = timestamps.size() > 1 ? static_cast<double>(timestamps.back() - timestamps.front()) /
+                                                          static_cast<double>(timestamps.size() - 1)
+                                                    : 0;
   std::cout << "transfer test: " << equal << " of " << table_size << " values recorded equal to the table sent ("
             << recorded.size() << " recorded, " << master.channel().counter_gaps() << " lost packets, "
-            << target.slave.overloads() << " overloads, " << executive.statistics(0).overruns << " overruns)\n";
+            << target.slave.overloads() << " overloads, " << executive.statistics(0).overruns
+            << " overruns; mean step by the DAQ timestamps " << mean_step_us << " us)\n";
   return equal == table_size && master.channel().counter_gaps() == 0 && target.slave.overloads() == 0 ? 0 : 1;
 }
