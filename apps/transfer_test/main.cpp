@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <iostream>
 #include <mutex>
 #include <random>
@@ -103,7 +104,7 @@ class XcpPort : public duet::host::RealTimePort {
 
 }  // namespace
 
-int main() {
+int run_transfer_test() {
   Target target;
   XcpPort port{description, target};
   rt::Executive<XcpPort, 1> executive{description, port};
@@ -186,4 +187,13 @@ int main() {
             << target.slave.overloads() << " overloads, " << executive.statistics(0).overruns
             << " overruns; mean step by the DAQ timestamps " << mean_step_us << " us)\n";
   return equal == table_size && master.channel().counter_gaps() == 0 && target.slave.overloads() == 0 ? 0 : 1;
+}
+
+int main() {
+  try {
+    return run_transfer_test();
+  } catch (const std::exception& error) {  // a bug or an exhausted machine: say so instead of aborting
+    std::cerr << "transfer test: internal error: " << error.what() << '\n';
+    return 1;
+  }
 }

@@ -29,7 +29,7 @@ struct Block {
 
 class A2lError {
  public:
-  A2lError(std::string_view source, std::size_t line, std::size_t column, std::string problem)
+  A2lError(std::string_view source, std::size_t line, std::size_t column, const std::string& problem)
       : message_(std::string{source} + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + problem) {}
   [[nodiscard]] const std::string& message() const { return message_; }
 
@@ -157,7 +157,7 @@ class Reader {
 
   std::optional<A2lError> error;
 
-  A2lError fail(const Token& token, const std::string& problem) const {
+  [[nodiscard]] A2lError fail(const Token& token, const std::string& problem) const {
     return A2lError{source_, token.line, token.column, problem};
   }
 
@@ -293,8 +293,8 @@ Result<A2lDescription> read_a2l(std::string_view text, std::string_view source) 
           if (const Token* unit = reader.value(inner, 2, "the timestamp unit")) {
             constexpr std::string_view units[] = {"UNIT_1NS",   "UNIT_10NS", "UNIT_100NS", "UNIT_1US",   "UNIT_10US",
                                                   "UNIT_100US", "UNIT_1MS",  "UNIT_10MS",  "UNIT_100MS", "UNIT_1S"};
-            for (std::uint8_t code = 0; code < std::size(units); ++code) {
-              if (unit->value == units[code]) a2l.timestamp_unit = code;
+            for (std::size_t code = 0; code < std::size(units); ++code) {
+              if (unit->value == units[code]) a2l.timestamp_unit = static_cast<std::uint8_t>(code);
             }
           }
         } else if (inner.keyword == "EVENT") {

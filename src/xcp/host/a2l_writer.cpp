@@ -63,7 +63,8 @@ std::string write_a2l(const A2lDescription& a2l) {
       out << "        /begin IF_DATA XCP\n";
       out << "          /begin SEGMENT " << segment_number++ << " 2 " << static_cast<unsigned>(memory.extension)
           << " 0 0\n";
-      out << "            /begin CHECKSUM XCP_CRC_16_CITT MAX_BLOCK_SIZE 0xFFFF EXTERNAL_FUNCTION \"\" /end CHECKSUM\n";
+      out << R"(            /begin CHECKSUM XCP_CRC_16_CITT MAX_BLOCK_SIZE 0xFFFF EXTERNAL_FUNCTION "" /end CHECKSUM)"
+          << '\n';
       out << "            /begin PAGE 0 ECU_ACCESS_DONT_CARE XCP_READ_ACCESS_DONT_CARE XCP_WRITE_ACCESS_DONT_CARE"
              " /end PAGE\n";
       out << "            /begin PAGE 1 ECU_ACCESS_DONT_CARE XCP_READ_ACCESS_DONT_CARE XCP_WRITE_ACCESS_NOT_ALLOWED"
@@ -147,7 +148,7 @@ std::string write_a2l(const A2lDescription& a2l) {
   for (const std::vector<Variable>* list : {&a2l.measurements, &a2l.characteristics}) {
     for (const Variable& variable : *list) {
       if (variable.conversion == Conversion{}) continue;
-      out << "    /begin COMPU_METHOD " << conversion_name(variable) << " \"\" LINEAR \"%.6\" " << quoted(variable.unit)
+      out << "    /begin COMPU_METHOD " << conversion_name(variable) << R"( "" LINEAR "%.6" )" << quoted(variable.unit)
           << " COEFFS_LINEAR " << number(variable.conversion.factor) << " " << number(variable.conversion.offset)
           << " /end COMPU_METHOD\n";
     }

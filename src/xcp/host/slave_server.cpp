@@ -66,7 +66,7 @@ void SlaveServer::stop() {
   }
 }
 
-void SlaveServer::notify() {
+void SlaveServer::notify() const {
   if (wake_ < 0) return;
   const std::uint64_t one = 1;
   [[maybe_unused]] const ssize_t written = ::write(wake_, &one, sizeof(one));

@@ -76,7 +76,7 @@ struct A2lDescription {
   bool operator==(const A2lDescription&) const = default;
 };
 
-std::string write_a2l(const A2lDescription& description);
+std::string write_a2l(const A2lDescription& a2l);
 
 // Reads an A2L file; failures say "line:column: problem". `source` names the file in messages.
 Result<A2lDescription> read_a2l(std::string_view text, std::string_view source = "A2L");

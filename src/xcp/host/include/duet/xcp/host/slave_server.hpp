@@ -38,7 +38,7 @@ class SlaveServer {
   void stop();
   [[nodiscard]] std::uint16_t port() const { return port_; }
   // DAQ packets are waiting: send them now rather than at the next millisecond. Callable from any thread.
-  void notify();
+  void notify() const;
 
   [[nodiscard]] std::uint64_t refused_masters() const { return refused_masters_; }
 
