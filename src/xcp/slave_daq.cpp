@@ -268,6 +268,7 @@ Slave::Result Slave::start_stop_synch(PacketReader& request, PacketWriter&) {
   return ok;
 }
 
+// NOLINTNEXTLINE(readability-make-member-function-const): every handler has the table's signature
 Slave::Result Slave::get_daq_clock(PacketReader&, PacketWriter& response) {
   const std::uint32_t now = configuration_.timestamp != nullptr ? configuration_.timestamp() : 0;
   response.u8(0).u8(0).u8(0).u32(now);  // reserved, trigger info, payload format: a plain 32-bit timestamp
@@ -281,6 +282,7 @@ Slave::Result Slave::get_daq_processor_info(PacketReader&, PacketWriter& respons
   return ok;
 }
 
+// NOLINTNEXTLINE(readability-make-member-function-const): every handler has the table's signature
 Slave::Result Slave::get_daq_resolution_info(PacketReader&, PacketWriter& response) {
   const auto max_entry = static_cast<std::uint8_t>(configuration_.max_dto - pid_size - timestamp_size > 0xFF
                                                        ? 0xFF

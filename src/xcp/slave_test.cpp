@@ -138,8 +138,8 @@ TEST_P(SlaveConformance, AnswersEveryRequestExactly) {
   }
 }
 
-const std::string connect = "FF 00";
-const std::string connected = "FF 05 80 10 00 04 01 01";  // CAL/PAG and DAQ
+constexpr const char* connect = "FF 00";
+constexpr const char* connected = "FF 05 80 10 00 04 01 01";  // CAL/PAG and DAQ
 
 INSTANTIATE_TEST_SUITE_P(
     Sessions, SlaveConformance,
@@ -399,31 +399,33 @@ std::vector<std::string> drain(TransmitQueue& queue) {
 
 // List 0 on event 0 with timestamps: ODT 0 = 4 bytes at 0x1000 and 2 at 0x1004, ODT 1 = 2 bytes at 0x100E.
 // List 1 on event 1 every second time: 1 byte at 0x2000.
-const std::vector<std::string> two_lists = {"FF 00",
-                                            "D6",
-                                            "D5 00 02 00",
-                                            "D4 00 00 00 02",
-                                            "D4 00 01 00 01",
-                                            "D3 00 00 00 00 02",
-                                            "D3 00 00 00 01 01",
-                                            "D3 00 01 00 00 01",
-                                            "E2 00 00 00 00 00",
-                                            "E1 FF 04 00 00 10 00 00",
-                                            "E1 FF 02 00 04 10 00 00",
-                                            "E2 00 00 00 01 00",
-                                            "E1 FF 02 00 0E 10 00 00",
-                                            "E2 00 01 00 00 00",
-                                            "E1 FF 01 00 00 20 00 00",
-                                            "E0 10 00 00 00 00 01 00",
-                                            "E0 00 01 00 01 00 02 00",
-                                            "DE 02 00 00",
-                                            "DE 02 01 00",
-                                            "DD 01"};
+std::vector<std::string> two_lists() {
+  return {"FF 00",
+          "D6",
+          "D5 00 02 00",
+          "D4 00 00 00 02",
+          "D4 00 01 00 01",
+          "D3 00 00 00 00 02",
+          "D3 00 00 00 01 01",
+          "D3 00 01 00 00 01",
+          "E2 00 00 00 00 00",
+          "E1 FF 04 00 00 10 00 00",
+          "E1 FF 02 00 04 10 00 00",
+          "E2 00 00 00 01 00",
+          "E1 FF 02 00 0E 10 00 00",
+          "E2 00 01 00 00 00",
+          "E1 FF 01 00 00 20 00 00",
+          "E0 10 00 00 00 00 01 00",
+          "E0 00 01 00 01 00 02 00",
+          "DE 02 00 00",
+          "DE 02 01 00",
+          "DD 01"};
+}
 
 TEST_F(SlaveFixture, EventsSampleTheirListsIntoWholePackets) {
   const SlaveConfiguration configuration = make_configuration();
   Slave slave{configuration};
-  run(slave, two_lists);
+  run(slave, two_lists());
   slave.on_event(0);
   slave.on_event(1);  // prescaler 2: not yet
   EXPECT_EQ(drain(queue), (std::vector<std::string>{"00 44 33 22 11 00 01 02 03 04 05", "01 0E 0F"}));
@@ -443,7 +445,7 @@ TEST_F(SlaveFixture, ASampleThatDoesNotFitIsDroppedWholeCountedAndAnnounced) {
   SlaveConfiguration configuration = make_configuration();
   configuration.queue = &small_queue;
   Slave slave{configuration};
-  run(slave, two_lists);
+  run(slave, two_lists());
   slave.on_event(0);
   slave.on_event(0);  // no room: dropped whole
   EXPECT_EQ(slave.overloads(), 1U);
@@ -465,7 +467,7 @@ TEST_F(SlaveFixture, TheEcuPageIsThePointerTheModelReadsThrough) {
 TEST_F(SlaveFixture, DisconnectStopsDaq) {
   const SlaveConfiguration configuration = make_configuration();
   Slave slave{configuration};
-  run(slave, two_lists);
+  run(slave, two_lists());
   run(slave, {"FE"});
   slave.on_event(0);
   EXPECT_TRUE(queue.empty());
