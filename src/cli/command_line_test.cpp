@@ -1,5 +1,3 @@
-#include "command_line.hpp"
-
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -7,22 +5,10 @@
 #include <vector>
 
 #include "duet/version.hpp"
+#include "run_for_test.hpp"
 
 namespace duet::cli {
 namespace {
-
-struct Outcome {
-  ExitCode exit_code;
-  std::string out;
-  std::string err;
-};
-
-Outcome run(std::vector<std::string> arguments) {
-  std::ostringstream out;
-  std::ostringstream err;
-  const ExitCode exit_code = run_command_line(arguments, {out, err});
-  return {exit_code, out.str(), err.str()};
-}
 
 TEST(CommandLine, HelpListsEverySubcommand) {
   const Outcome outcome = run({"--help"});

@@ -9,26 +9,13 @@
 #include <sstream>
 #include <thread>
 
-#include "command_line.hpp"
+#include "run_for_test.hpp"
 #include "test_target.hpp"
 
 namespace duet::cli {
 namespace {
 
 using namespace duet::xcp::host;
-
-struct Outcome {
-  ExitCode exit_code;
-  std::string out;
-  std::string err;
-};
-
-Outcome run(std::vector<std::string> arguments) {
-  std::ostringstream out;
-  std::ostringstream err;
-  const ExitCode exit_code = run_command_line(arguments, {out, err});
-  return {exit_code, out.str(), err.str()};
-}
 
 class XcpCommand : public ::testing::Test {
  protected:

@@ -19,24 +19,35 @@ struct QueueLock {
   void (*unlock)(std::uint32_t saved) = nullptr;
 };
 
+// The little-endian fields and the record header, written through the derived appender's u8().
+template <typename Appender>
+class FieldAppender {
+ public:
+  Appender& u16(std::uint16_t value) {
+    return self().u8(static_cast<std::uint8_t>(value)).u8(static_cast<std::uint8_t>(value >> 8U));
+  }
+  Appender& u32(std::uint32_t value) {
+    return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
+  }
+  // Starts the record of a packet of `size` bytes; the caller then writes exactly that many.
+  Appender& packet(std::size_t size) { return u16(static_cast<std::uint16_t>(size)); }
+
+ private:
+  Appender& self() { return static_cast<Appender&>(*this); }
+};
+
 class TransmitQueue {
  public:
   static constexpr std::size_t record_header = 2;
 
   // Writes the bytes of the packets a producer adds, wrapping round the ring as needed.
-  class Appender {
+  class Appender : public FieldAppender<Appender> {
    public:
     Appender(std::span<std::uint8_t> ring, std::size_t position) : ring_(ring), position_(position) {}
     Appender& u8(std::uint8_t value) {
       ring_[position_] = value;
       position_ = position_ + 1 == ring_.size() ? 0 : position_ + 1;
       return *this;
-    }
-    Appender& u16(std::uint16_t value) {
-      return u8(static_cast<std::uint8_t>(value)).u8(static_cast<std::uint8_t>(value >> 8U));
-    }
-    Appender& u32(std::uint32_t value) {
-      return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
     }
     // Copies in at most two runs, before and after the ring's end.
     Appender& bytes(const std::uint8_t* values, std::size_t count) {
@@ -47,28 +58,19 @@ class TransmitQueue {
       position_ = count < to_end ? position_ + count : count - first;
       return *this;
     }
-    // Starts the record of a packet of `size` bytes; the caller then writes exactly that many.
-    Appender& packet(std::size_t size) { return u16(static_cast<std::uint16_t>(size)); }
 
    private:
-    friend class TransmitQueue;
     std::span<std::uint8_t> ring_;
     std::size_t position_;
   };
 
   // The same for records that lie in one piece, the usual case: plain stores, no wrap checks.
-  class LinearAppender {
+  class LinearAppender : public FieldAppender<LinearAppender> {
    public:
     explicit LinearAppender(std::uint8_t* at) : at_(at) {}
     LinearAppender& u8(std::uint8_t value) {
       *at_++ = value;
       return *this;
-    }
-    LinearAppender& u16(std::uint16_t value) {
-      return u8(static_cast<std::uint8_t>(value)).u8(static_cast<std::uint8_t>(value >> 8U));
-    }
-    LinearAppender& u32(std::uint32_t value) {
-      return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
     }
     LinearAppender& bytes(const std::uint8_t* values, std::size_t count) {
       switch (count) {  // constant sizes become single loads and stores
@@ -81,7 +83,6 @@ class TransmitQueue {
       at_ += count;
       return *this;
     }
-    LinearAppender& packet(std::size_t size) { return u16(static_cast<std::uint16_t>(size)); }
 
    private:
     std::uint8_t* at_;
