@@ -83,6 +83,24 @@ class FrameDecoder {
 
   // Bytes thrown away while resynchronising.
   [[nodiscard]] std::size_t dropped_bytes() const { return dropped_; }
+  // Bytes held for a frame that is not complete yet.
+  [[nodiscard]] std::size_t buffered() const { return filled_; }
+
+  // Gives up on what is buffered: drops bytes one at a time, still delivering any valid frame that starts behind
+  // them, until nothing is left. For links that send whole frames at once: a partial frame that waits too long
+  // (an inter-frame gap) was garbage that looked like a header.
+  template <typename OnPacket>
+  void flush_stale(OnPacket&& on_packet) {
+    while (filled_ > 0) {
+      consume(1);
+      ++dropped_;
+      while (const Frame frame = next_frame()) {
+        on_packet(frame.counter,
+                  std::span<const std::uint8_t>{buffer_.data() + framing_.header_size(), frame.packet_size});
+        consume(frame.size);
+      }
+    }
+  }
   // Forgets a partial frame (the link was reset).
   void reset() { filled_ = 0; }
 

@@ -1,0 +1,120 @@
+#pragma once
+// For tests: "firmware" on the PC whose XCP channel is a pseudo-terminal, as QEMU's `-serial pty` gives one. An XCP
+// slave behind a StreamTransport on the pty's master side; the bridge opens the other side (path()). One thread does
+// the I/O and steps a model at 1 kHz: `counter` counts the steps, event 0 samples after each.
+
+#include <fcntl.h>
+#include <poll.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "duet/xcp/stream_transport.hpp"
+
+namespace duet::bridge {
+
+class PtyFirmware {
+ public:
+  PtyFirmware() {
+    pty_ = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
+    grantpt(pty_);
+    unlockpt(pty_);
+    path_ = ptsname(pty_);
+  }
+  ~PtyFirmware() {
+    stop();
+    if (pty_ >= 0) ::close(pty_);
+  }
+  PtyFirmware(const PtyFirmware&) = delete;
+  PtyFirmware& operator=(const PtyFirmware&) = delete;
+
+  [[nodiscard]] const std::string& path() const { return path_; }
+
+  void start() {
+    running_ = true;
+    thread_ = std::thread{[this] { serve(); }};
+  }
+  void stop() {
+    running_ = false;
+    if (thread_.joinable()) thread_.join();
+  }
+  // Writes bytes straight into the channel, as noise on the line would.
+  void inject(const std::vector<std::uint8_t>& bytes) { garbage_ = bytes; }
+
+  std::uint32_t counter = 0;
+  std::array<std::uint8_t, 8> parameters{};
+
+ private:
+  void serve() {
+    std::array<std::uint8_t, 4096> input{};
+    std::array<std::uint8_t, 4096> output{};
+    std::vector<std::uint8_t> unsent;
+    auto next_step = std::chrono::steady_clock::now();
+    while (running_) {
+      pollfd watched{pty_, POLLIN, 0};
+      const auto wait =
+          std::chrono::duration_cast<std::chrono::milliseconds>(next_step - std::chrono::steady_clock::now());
+      ::poll(&watched, 1, wait.count() > 0 ? static_cast<int>(wait.count()) : 0);
+      const ssize_t received = ::read(pty_, input.data(), input.size());
+      if (received > 0) transport_.receive(std::span{input}.first(static_cast<std::size_t>(received)));
+      if (std::chrono::steady_clock::now() >= next_step) {
+        ++counter;
+        slave_.on_event(0);
+        next_step += std::chrono::milliseconds{1};
+      }
+      if (!garbage_.empty()) {
+        unsent.insert(unsent.end(), garbage_.begin(), garbage_.end());
+        garbage_.clear();
+      }
+      const std::size_t framed = transport_.transmit(output);
+      unsent.insert(unsent.end(), output.begin(), output.begin() + static_cast<std::ptrdiff_t>(framed));
+      if (!unsent.empty()) {  // the pty holds a few kilobytes; keep what it does not take
+        const ssize_t written = ::write(pty_, unsent.data(), unsent.size());
+        if (written > 0) unsent.erase(unsent.begin(), unsent.begin() + written);
+      }
+    }
+  }
+
+  int pty_ = -1;
+  std::string path_;
+  std::atomic<bool> running_{false};
+  std::thread thread_;
+  std::vector<std::uint8_t> garbage_;
+
+  std::array<xcp::MemoryRegion, 2> regions_{
+      xcp::MemoryRegion{
+          .name = "counter", .address = 0x1000, .size = 4, .memory = reinterpret_cast<std::uint8_t*>(&counter)},
+      xcp::MemoryRegion{.name = "parameters",
+                        .address = 0x2000,
+                        .size = 8,
+                        .memory = parameters.data(),
+                        .access = xcp::Access::read_write}};
+  std::array<xcp::EventChannel, 1> events_{xcp::EventChannel{.name = "1 ms", .time_cycle = 1, .time_unit = 6}};
+  std::array<xcp::DaqList, 2> lists_{};
+  std::array<xcp::Odt, 4> odts_{};
+  std::array<xcp::OdtEntry, 8> entries_{};
+  std::array<std::uint8_t, 1 << 16> queue_storage_{};
+  std::array<std::uint8_t, 256> download_buffer_{};
+  xcp::TransmitQueue queue_{queue_storage_, {}};
+  xcp::SlaveConfiguration configuration_{.memory = xcp::MemoryMap{regions_},
+                                         .max_cto = 248,
+                                         .max_dto = 256,
+                                         .identification = "pty_firmware",
+                                         .download_buffer = download_buffer_,
+                                         .events = events_,
+                                         .daq = {lists_, odts_, entries_},
+                                         .queue = &queue_};
+  xcp::Slave slave_{configuration_};
+  std::array<std::uint8_t, 512> decoder_buffer_{};
+  std::array<std::uint8_t, 512> packet_buffer_{};
+  xcp::StreamTransport transport_{slave_, queue_, xcp::ethernet_framing, decoder_buffer_, 248, packet_buffer_};
+};
+
+}  // namespace duet::bridge

@@ -1,0 +1,380 @@
+#include "relay.hpp"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <netinet/tcp.h>
+#include <signal.h>
+#include <sys/epoll.h>
+#include <sys/eventfd.h>
+#include <sys/signalfd.h>
+#include <sys/socket.h>
+#include <sys/timerfd.h>
+#include <unistd.h>
+
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+
+#include "duet/xcp/protocol.hpp"
+
+namespace duet::bridge {
+namespace {
+
+constexpr std::size_t max_packet = 0xFFFF;
+constexpr std::chrono::milliseconds longest_retry{2000};
+constexpr std::uint8_t disconnect_command = static_cast<std::uint8_t>(xcp::Command::disconnect);
+
+bool is_answer(std::uint8_t pid) { return pid == xcp::pid::response || pid == xcp::pid::error; }
+
+// The LEN/CTR header of a frame that carries `size` bytes.
+std::array<std::uint8_t, 4> frame_header(std::uint16_t counter, std::size_t size) {
+  return {static_cast<std::uint8_t>(size), static_cast<std::uint8_t>(size >> 8U), static_cast<std::uint8_t>(counter),
+          static_cast<std::uint8_t>(counter >> 8U)};
+}
+
+}  // namespace
+
+Relay::Relay(RelayOptions options)
+    : options_(std::move(options)),
+      channel_buffer_(xcp::ethernet_framing.frame_size(max_packet)),
+      master_buffer_(xcp::ethernet_framing.frame_size(max_packet)),
+      from_channel_(xcp::ethernet_framing, channel_buffer_, max_packet),
+      from_master_(xcp::ethernet_framing, master_buffer_, max_packet) {}
+
+Relay::~Relay() {
+  for (int descriptor : {epoll_, listener_, wake_, retry_timer_, channel_, master_}) {
+    if (descriptor >= 0) ::close(descriptor);
+  }
+}
+
+void Relay::log(const std::string& line) const { std::cerr << "duet-bridge: " << line << std::endl; }
+
+Status Relay::start() {
+  epoll_ = epoll_create1(EPOLL_CLOEXEC);
+  wake_ = eventfd(0, EFD_CLOEXEC | EFD_NONBLOCK);
+  retry_timer_ = timerfd_create(CLOCK_MONOTONIC, TFD_CLOEXEC | TFD_NONBLOCK);
+  listener_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
+  const int on = 1;
+  setsockopt(listener_, SOL_SOCKET, SO_REUSEADDR, &on, sizeof(on));
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(options_.listen_port);
+  if (inet_pton(AF_INET, options_.listen_address.c_str(), &address.sin_addr) != 1) {
+    return Failure{"'" + options_.listen_address + "' is not an IPv4 address to listen on"};
+  }
+  if (::bind(listener_, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0 || ::listen(listener_, 4) != 0) {
+    return Failure{options_.listen_address + ":" + std::to_string(options_.listen_port) + ": " + std::strerror(errno)};
+  }
+  socklen_t length = sizeof(address);
+  getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
+  port_ = ntohs(address.sin_port);
+  for (int descriptor : {listener_, wake_, retry_timer_}) {
+    epoll_event event{EPOLLIN, {.fd = descriptor}};
+    epoll_ctl(epoll_, EPOLL_CTL_ADD, descriptor, &event);
+  }
+  log("listening for an XCP master on " + options_.listen_address + ":" + std::to_string(port_));
+  open_channel_now();
+  return done();
+}
+
+void Relay::arm_retry(std::chrono::milliseconds delay) {
+  itimerspec timer{};
+  timer.it_value.tv_sec = static_cast<time_t>(delay.count() / 1000);
+  timer.it_value.tv_nsec = static_cast<long>((delay.count() % 1000) * 1'000'000);
+  timerfd_settime(retry_timer_, 0, &timer, nullptr);
+}
+
+void Relay::open_channel_now() {
+  if (channel_ >= 0) return;
+  Result<int> opened = open_channel(options_.channel);
+  if (!opened) {
+    if (retry_delay_ == std::chrono::milliseconds{100} || options_.verbose) log(opened.error() + "; retrying");
+    arm_retry(retry_delay_);
+    retry_delay_ = std::min(retry_delay_ * 2, longest_retry);
+    return;
+  }
+  channel_ = opened.value();
+  retry_delay_ = std::chrono::milliseconds{100};
+  from_channel_.reset();
+  to_channel_.clear();
+  ++channel_opens_;
+  channel_open_ = true;
+  epoll_event event{EPOLLIN, {.fd = channel_}};
+  epoll_ctl(epoll_, EPOLL_CTL_ADD, channel_, &event);
+  log("channel " + options_.channel_uri + " open");
+}
+
+void Relay::close_channel(const std::string& reason) {
+  if (channel_ < 0) return;
+  epoll_ctl(epoll_, EPOLL_CTL_DEL, channel_, nullptr);
+  ::close(channel_);
+  channel_ = -1;
+  channel_open_ = false;
+  swallow_responses_ = 0;
+  commands_in_flight_.clear();
+  log("channel " + options_.channel_uri + " closed (" + reason + "); retrying");
+  arm_retry(retry_delay_);
+}
+
+void Relay::accept_master() {
+  sockaddr_in peer{};
+  socklen_t length = sizeof(peer);
+  const int accepted = ::accept4(listener_, reinterpret_cast<sockaddr*>(&peer), &length, SOCK_CLOEXEC | SOCK_NONBLOCK);
+  if (accepted < 0) return;
+  char text[INET_ADDRSTRLEN] = {};
+  inet_ntop(AF_INET, &peer.sin_addr, text, sizeof(text));
+  const std::string who = std::string{text} + ":" + std::to_string(ntohs(peer.sin_port));
+  if (master_ >= 0) {  // XCP has one master
+    ::close(accepted);
+    ++masters_refused_;
+    log("refused a second master from " + who + ": one master at a time");
+    return;
+  }
+  master_ = accepted;
+  const int on = 1;
+  setsockopt(master_, IPPROTO_TCP, TCP_NODELAY, &on, sizeof(on));
+  from_master_.reset();
+  to_master_.clear();
+  ++masters_served_;
+  master_connected_ = true;
+  epoll_event event{EPOLLIN, {.fd = master_}};
+  epoll_ctl(epoll_, EPOLL_CTL_ADD, master_, &event);
+  if (options_.verbose) log("master " + who + " connected");
+}
+
+// The master went away: end its session with the slave so that DAQ stops, and swallow the answer.
+void Relay::close_master(const std::string& reason) {
+  if (master_ < 0) return;
+  epoll_ctl(epoll_, EPOLL_CTL_DEL, master_, nullptr);
+  ::close(master_);
+  master_ = -1;
+  master_connected_ = false;
+  to_master_.clear();
+  if (options_.verbose) log("master gone (" + reason + ")");
+  if (channel_ >= 0) {
+    const std::array<std::uint8_t, 1> disconnect{disconnect_command};
+    enqueue_to_slave(0, disconnect);
+    ++swallow_responses_;
+  }
+}
+
+void Relay::enqueue_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
+  to_channel_.append(frame_header(counter, packet.size()));
+  to_channel_.append(packet);
+  commands_in_flight_.push_back(std::chrono::steady_clock::now());
+  ++frames_to_slave_;
+}
+
+void Relay::read_channel() {
+  std::array<std::uint8_t, 65536> buffer{};
+  for (;;) {
+    const ssize_t received = ::read(channel_, buffer.data(), buffer.size());
+    if (received < 0 && (errno == EAGAIN || errno == EINTR)) return;
+    if (received <= 0) {
+      close_channel(received == 0 ? "end of file" : std::strerror(errno));
+      return;
+    }
+    from_channel_.feed(
+        std::span{buffer}.first(static_cast<std::size_t>(received)),
+        [this](std::uint16_t counter, std::span<const std::uint8_t> packet) { forward_to_master(counter, packet); });
+    channel_stalled_since_ = std::chrono::steady_clock::now();
+  }
+}
+
+void Relay::read_master() {
+  std::array<std::uint8_t, 65536> buffer{};
+  for (;;) {
+    const ssize_t received = ::recv(master_, buffer.data(), buffer.size(), 0);
+    if (received < 0 && (errno == EAGAIN || errno == EINTR)) return;
+    if (received <= 0) {
+      close_master(received == 0 ? "closed" : std::strerror(errno));
+      return;
+    }
+    from_master_.feed(
+        std::span{buffer}.first(static_cast<std::size_t>(received)),
+        [this](std::uint16_t counter, std::span<const std::uint8_t> packet) { forward_to_slave(counter, packet); });
+    master_stalled_since_ = std::chrono::steady_clock::now();
+  }
+}
+
+void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet) {
+  const bool answer = is_answer(packet[0]);
+  if (answer && !commands_in_flight_.empty()) {
+    const double latency =
+        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - commands_in_flight_.front())
+            .count();
+    commands_in_flight_.pop_front();
+    latency_total_us_ = latency_total_us_ + latency;
+    if (latency > latency_max_us_) latency_max_us_ = latency;
+    ++responses_;
+  }
+  if (answer && swallow_responses_ > 0) {
+    --swallow_responses_;
+    return;
+  }
+  if (master_ < 0) return;
+  if (!answer && packet[0] < xcp::pid::service && to_master_.size() > options_.master_queue_limit) {
+    ++daq_frames_dropped_;  // the master does not keep up: drop DAQ, never answers
+    return;
+  }
+  to_master_.append(frame_header(counter, packet.size()));
+  to_master_.append(packet);
+  ++frames_to_master_;
+}
+
+void Relay::forward_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
+  if (channel_ < 0) return;  // no slave: the master will time out, as with a dead slave
+  enqueue_to_slave(counter, packet);
+}
+
+void Relay::flush_stale_frames() {
+  constexpr std::chrono::milliseconds gap{20};
+  const auto now = std::chrono::steady_clock::now();
+  if (channel_ >= 0 && from_channel_.buffered() > 0 && now - channel_stalled_since_ >= gap) {
+    from_channel_.flush_stale(
+        [this](std::uint16_t counter, std::span<const std::uint8_t> packet) { forward_to_master(counter, packet); });
+  }
+  if (master_ >= 0 && from_master_.buffered() > 0 && now - master_stalled_since_ >= gap) {
+    from_master_.flush_stale(
+        [this](std::uint16_t counter, std::span<const std::uint8_t> packet) { forward_to_slave(counter, packet); });
+  }
+}
+
+void Relay::flush_master() {
+  while (master_ >= 0 && !to_master_.empty()) {
+    const std::span<const std::uint8_t> bytes = to_master_.front();
+    const ssize_t sent = ::send(master_, bytes.data(), bytes.size(), MSG_NOSIGNAL);
+    if (sent < 0 && (errno == EAGAIN || errno == EINTR)) return;
+    if (sent <= 0) {
+      close_master(std::strerror(errno));
+      return;
+    }
+    bytes_to_master_ += static_cast<std::uint64_t>(sent);
+    to_master_.consume(static_cast<std::size_t>(sent));
+  }
+}
+
+// At most one RPMsg payload per write; EAGAIN waits for the channel, ENOMEM (no free RPMsg buffer) backs off.
+void Relay::flush_channel() {
+  while (channel_ >= 0 && !to_channel_.empty()) {
+    const std::span<const std::uint8_t> bytes = to_channel_.front();
+    const std::size_t chunk = std::min(bytes.size(), options_.channel_chunk);
+    const ssize_t written = ::write(channel_, bytes.data(), chunk);
+    if (written < 0 && (errno == EAGAIN || errno == EINTR)) return;
+    if (written < 0 && errno == ENOMEM) {
+      arm_retry(std::chrono::milliseconds{1});
+      return;
+    }
+    if (written <= 0) {
+      close_channel(std::strerror(errno));
+      return;
+    }
+    bytes_to_slave_ += static_cast<std::uint64_t>(written);
+    to_channel_.consume(static_cast<std::size_t>(written));
+  }
+}
+
+void Relay::update_interest() {
+  if (master_ >= 0) {
+    epoll_event event{EPOLLIN | (to_master_.empty() ? 0U : static_cast<std::uint32_t>(EPOLLOUT)), {.fd = master_}};
+    epoll_ctl(epoll_, EPOLL_CTL_MOD, master_, &event);
+  }
+  if (channel_ >= 0) {
+    epoll_event event{EPOLLIN | (to_channel_.empty() ? 0U : static_cast<std::uint32_t>(EPOLLOUT)), {.fd = channel_}};
+    epoll_ctl(epoll_, EPOLL_CTL_MOD, channel_, &event);
+  }
+}
+
+void Relay::run(bool handle_signals) {
+  int signals = -1;
+  if (handle_signals) {
+    sigset_t set;
+    sigemptyset(&set);
+    for (int number : {SIGINT, SIGTERM, SIGUSR1}) sigaddset(&set, number);
+    sigprocmask(SIG_BLOCK, &set, nullptr);
+    signals = signalfd(-1, &set, SFD_CLOEXEC | SFD_NONBLOCK);
+    epoll_event event{EPOLLIN, {.fd = signals}};
+    epoll_ctl(epoll_, EPOLL_CTL_ADD, signals, &event);
+  }
+  running_ = true;
+  std::array<epoll_event, 8> events{};
+  while (running_) {
+    // Without a partial frame waiting, sleep until something happens; with one, wake up to give up on it.
+    const bool waiting =
+        (channel_ >= 0 && from_channel_.buffered() > 0) || (master_ >= 0 && from_master_.buffered() > 0);
+    const int ready = epoll_wait(epoll_, events.data(), static_cast<int>(events.size()), waiting ? 25 : -1);
+    if (ready < 0 && errno != EINTR) break;
+    for (int index = 0; index < ready; ++index) {
+      const int descriptor = events[static_cast<std::size_t>(index)].data.fd;
+      const std::uint32_t what = events[static_cast<std::size_t>(index)].events;
+      if (descriptor == wake_) {
+        std::uint64_t ignored = 0;
+        [[maybe_unused]] const ssize_t read = ::read(wake_, &ignored, sizeof(ignored));
+      } else if (descriptor == signals) {
+        signalfd_siginfo info{};
+        while (::read(signals, &info, sizeof(info)) == sizeof(info)) {
+          if (info.ssi_signo == SIGUSR1) {
+            log(status());
+          } else {
+            running_ = false;
+          }
+        }
+      } else if (descriptor == retry_timer_) {
+        std::uint64_t expirations = 0;
+        [[maybe_unused]] const ssize_t read = ::read(retry_timer_, &expirations, sizeof(expirations));
+        if (channel_ < 0) open_channel_now();
+      } else if (descriptor == listener_) {
+        accept_master();
+      } else if (descriptor == channel_ && channel_ >= 0) {
+        if ((what & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0) read_channel();
+      } else if (descriptor == master_ && master_ >= 0) {
+        if ((what & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0) read_master();
+      }
+    }
+    flush_stale_frames();
+    flush_channel();
+    flush_master();
+    update_interest();
+  }
+  if (signals >= 0) ::close(signals);
+}
+
+void Relay::stop() {
+  running_ = false;
+  const std::uint64_t one = 1;
+  [[maybe_unused]] const ssize_t written = ::write(wake_, &one, sizeof(one));
+}
+
+RelayCounters Relay::counters() const {
+  RelayCounters counters;
+  counters.frames_to_master = frames_to_master_;
+  counters.frames_to_slave = frames_to_slave_;
+  counters.bytes_to_master = bytes_to_master_;
+  counters.bytes_to_slave = bytes_to_slave_;
+  counters.daq_frames_dropped = daq_frames_dropped_;
+  counters.garbage_bytes = from_channel_.dropped_bytes() + from_master_.dropped_bytes();
+  counters.channel_opens = channel_opens_;
+  counters.masters_served = masters_served_;
+  counters.masters_refused = masters_refused_;
+  counters.responses = responses_;
+  counters.latency_mean_us = responses_ == 0 ? 0 : latency_total_us_ / static_cast<double>(responses_.load());
+  counters.latency_max_us = latency_max_us_;
+  return counters;
+}
+
+std::string Relay::status() const {
+  const RelayCounters counters = this->counters();
+  std::ostringstream out;
+  out << "channel " << (channel_open_ ? "open" : "closed") << ", master " << (master_connected_ ? "connected" : "none")
+      << "; frames to master " << counters.frames_to_master << " (" << counters.bytes_to_master << " bytes), to slave "
+      << counters.frames_to_slave << " (" << counters.bytes_to_slave << " bytes); DAQ frames dropped "
+      << counters.daq_frames_dropped << "; garbage bytes " << counters.garbage_bytes << "; channel opened "
+      << counters.channel_opens << " times; masters served " << counters.masters_served << ", refused "
+      << counters.masters_refused << "; latency mean " << counters.latency_mean_us << " us, max "
+      << counters.latency_max_us << " us";
+  return out.str();
+}
+
+}  // namespace duet::bridge

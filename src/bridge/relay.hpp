@@ -1,0 +1,150 @@
+#pragma once
+// The XCP relay: frames between the real-time core's channel and one master on TCP, in one epoll loop.
+//
+// - Frame-aware both ways (XCP-on-TCP framing, LEN/CTR): garbage is skipped (counted), partial frames wait, frames
+//   pass unchanged.
+// - One master at a time: a second connection is closed at once, and logged.
+// - A master that goes away (cleanly or not) is disconnected from the slave on its behalf, so that DAQ stops; the
+//   slave's answer to that is swallowed.
+// - The channel going away (closed tty, firmware restarted) is retried with back-off; the listener stays open.
+// - Towards the master the queue is bounded: past the limit DAQ frames are dropped (counted), responses never. The
+//   channel is read whenever it has bytes; writes to it go in chunks of at most 496 bytes (an RPMsg payload) and are
+//   retried with back-off when the channel says EAGAIN or ENOMEM.
+// - LEN/CTR framing has no checksum, so a garbage byte can look like a header and hold the decoder up; since both
+//   ends write whole frames, a partial frame still waiting after a quiet gap (20 ms) is dropped byte by byte and the
+//   frames behind it are found.
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "channel.hpp"
+#include "duet/support/result.hpp"
+#include "duet/xcp/framing.hpp"
+
+namespace duet::bridge {
+
+struct RelayOptions {
+  ChannelAddress channel;
+  std::string channel_uri;  // as given, for messages
+  std::string listen_address = "127.0.0.1";
+  std::uint16_t listen_port = 5555;  // 0: any free port
+  std::size_t master_queue_limit = 1U << 20;
+  std::size_t channel_chunk = 496;
+  bool verbose = false;
+};
+
+struct RelayCounters {
+  std::uint64_t frames_to_master = 0;
+  std::uint64_t frames_to_slave = 0;
+  std::uint64_t bytes_to_master = 0;
+  std::uint64_t bytes_to_slave = 0;
+  std::uint64_t daq_frames_dropped = 0;
+  std::uint64_t garbage_bytes = 0;
+  std::uint64_t channel_opens = 0;
+  std::uint64_t masters_served = 0;
+  std::uint64_t masters_refused = 0;
+  std::uint64_t responses = 0;
+  double latency_mean_us = 0;  // command forwarded -> its response back
+  double latency_max_us = 0;
+};
+
+// Bytes waiting to be sent: appended at the back, sent from the front, contiguous for send().
+class ByteQueue {
+ public:
+  void append(std::span<const std::uint8_t> bytes) { bytes_.insert(bytes_.end(), bytes.begin(), bytes.end()); }
+  [[nodiscard]] std::span<const std::uint8_t> front() const { return std::span{bytes_}.subspan(head_); }
+  [[nodiscard]] std::size_t size() const { return bytes_.size() - head_; }
+  [[nodiscard]] bool empty() const { return size() == 0; }
+  void consume(std::size_t count) {
+    head_ += count;
+    if (head_ == bytes_.size()) {
+      bytes_.clear();
+      head_ = 0;
+    } else if (head_ > bytes_.size() / 2) {  // keep the storage from growing without bound
+      bytes_.erase(bytes_.begin(), bytes_.begin() + static_cast<std::ptrdiff_t>(head_));
+      head_ = 0;
+    }
+  }
+  void clear() {
+    bytes_.clear();
+    head_ = 0;
+  }
+
+ private:
+  std::vector<std::uint8_t> bytes_;
+  std::size_t head_ = 0;
+};
+
+class Relay {
+ public:
+  explicit Relay(RelayOptions options);
+  ~Relay();
+  Relay(const Relay&) = delete;
+  Relay& operator=(const Relay&) = delete;
+
+  // Binds the listener and tries the channel (a channel that is not there yet is retried).
+  Status start();
+  // Serves until stop() (from any thread) or, with `handle_signals`, SIGINT/SIGTERM; SIGUSR1 logs the counters.
+  void run(bool handle_signals = false);
+  void stop();
+
+  [[nodiscard]] std::uint16_t port() const { return port_; }
+  [[nodiscard]] RelayCounters counters() const;
+  [[nodiscard]] std::string status() const;
+  [[nodiscard]] bool channel_open() const { return channel_open_.load(); }
+  [[nodiscard]] bool master_connected() const { return master_connected_.load(); }
+
+ private:
+  void log(const std::string& line) const;
+  void open_channel_now();
+  void close_channel(const std::string& reason);
+  void accept_master();
+  void close_master(const std::string& reason);
+  void read_channel();
+  void read_master();
+  void flush_master();
+  void flush_channel();
+  void arm_retry(std::chrono::milliseconds delay);
+  void update_interest();
+  void enqueue_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet);
+  void forward_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet);
+  void forward_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet);
+  // Both ends send whole frames at once: a partial frame that waits longer than a gap was garbage.
+  void flush_stale_frames();
+
+  RelayOptions options_;
+  int epoll_ = -1;
+  int listener_ = -1;
+  int wake_ = -1;
+  int retry_timer_ = -1;
+  int channel_ = -1;
+  int master_ = -1;
+  std::uint16_t port_ = 0;
+  std::atomic<bool> running_{false};
+  std::atomic<bool> channel_open_{false};
+  std::atomic<bool> master_connected_{false};
+  std::chrono::milliseconds retry_delay_{100};
+  // When each decoder last made progress while holding a partial frame (see flush_stale_frames()).
+  std::chrono::steady_clock::time_point channel_stalled_since_{};
+  std::chrono::steady_clock::time_point master_stalled_since_{};
+
+  std::vector<std::uint8_t> channel_buffer_;
+  std::vector<std::uint8_t> master_buffer_;
+  xcp::FrameDecoder from_channel_;
+  xcp::FrameDecoder from_master_;
+  ByteQueue to_master_;
+  ByteQueue to_channel_;
+  int swallow_responses_ = 0;  // answers to commands the bridge sent on a vanished master's behalf
+  std::deque<std::chrono::steady_clock::time_point> commands_in_flight_;
+
+  mutable std::atomic<std::uint64_t> frames_to_master_{0}, frames_to_slave_{0}, bytes_to_master_{0}, bytes_to_slave_{0},
+      daq_frames_dropped_{0}, channel_opens_{0}, masters_served_{0}, masters_refused_{0}, responses_{0};
+  std::atomic<double> latency_total_us_{0}, latency_max_us_{0};
+};
+
+}  // namespace duet::bridge
