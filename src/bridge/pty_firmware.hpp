@@ -99,7 +99,7 @@ class PtyFirmware {
   std::array<xcp::EventChannel, 1> events_{xcp::EventChannel{.name = "1 ms", .time_cycle = 1, .time_unit = 6}};
   std::array<xcp::DaqList, 2> lists_{};
   std::array<xcp::Odt, 4> odts_{};
-  std::array<xcp::OdtEntry, 8> entries_{};
+  std::array<xcp::OdtEntry, 64> entries_{};
   std::array<std::uint8_t, 1 << 16> queue_storage_{};
   std::array<std::uint8_t, 256> download_buffer_{};
   xcp::TransmitQueue queue_{queue_storage_, {}};

@@ -135,6 +135,9 @@ void Relay::accept_master() {
   master_ = accepted;
   const int on = 1;
   setsockopt(master_, IPPROTO_TCP, TCP_NODELAY, &on, sizeof(on));
+  if (options_.master_send_buffer > 0) {
+    setsockopt(master_, SOL_SOCKET, SO_SNDBUF, &options_.master_send_buffer, sizeof(options_.master_send_buffer));
+  }
   from_master_.reset();
   to_master_.clear();
   ++masters_served_;
@@ -153,11 +156,14 @@ void Relay::close_master(const std::string& reason) {
   master_connected_ = false;
   to_master_.clear();
   if (options_.verbose) log("master gone (" + reason + ")");
-  if (channel_ >= 0) {
+  // Only a session the master opened needs ending; a disconnected slave would not answer, and an answer
+  // expected but never coming would swallow the next master's.
+  if (channel_ >= 0 && master_opened_session_) {
     const std::array<std::uint8_t, 1> disconnect{disconnect_command};
     enqueue_to_slave(0, disconnect);
     ++swallow_responses_;
   }
+  master_opened_session_ = false;
 }
 
 void Relay::enqueue_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
@@ -168,7 +174,7 @@ void Relay::enqueue_to_slave(std::uint16_t counter, std::span<const std::uint8_t
 }
 
 void Relay::read_channel() {
-  std::array<std::uint8_t, 65536> buffer{};
+  std::vector<std::uint8_t>& buffer = read_buffer_;
   for (;;) {
     const ssize_t received = ::read(channel_, buffer.data(), buffer.size());
     if (received < 0 && (errno == EAGAIN || errno == EINTR)) return;
@@ -184,7 +190,7 @@ void Relay::read_channel() {
 }
 
 void Relay::read_master() {
-  std::array<std::uint8_t, 65536> buffer{};
+  std::vector<std::uint8_t>& buffer = read_buffer_;
   for (;;) {
     const ssize_t received = ::recv(master_, buffer.data(), buffer.size(), 0);
     if (received < 0 && (errno == EAGAIN || errno == EINTR)) return;
@@ -226,6 +232,8 @@ void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_
 
 void Relay::forward_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
   if (channel_ < 0) return;  // no slave: the master will time out, as with a dead slave
+  if (packet[0] == static_cast<std::uint8_t>(xcp::Command::connect)) master_opened_session_ = true;
+  if (packet[0] == disconnect_command) master_opened_session_ = false;
   enqueue_to_slave(counter, packet);
 }
 

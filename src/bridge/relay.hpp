@@ -34,6 +34,8 @@ struct RelayOptions {
   std::string listen_address = "127.0.0.1";
   std::uint16_t listen_port = 5555;  // 0: any free port
   std::size_t master_queue_limit = 1U << 20;
+  // The kernel's send buffer towards the master: with the queue, all a slow master can hold up (0: the kernel's).
+  int master_send_buffer = 256 * 1024;
   std::size_t channel_chunk = 496;
   bool verbose = false;
 };
@@ -133,13 +135,15 @@ class Relay {
   std::chrono::steady_clock::time_point channel_stalled_since_{};
   std::chrono::steady_clock::time_point master_stalled_since_{};
 
+  std::vector<std::uint8_t> read_buffer_ = std::vector<std::uint8_t>(65536);  // allocated once: reads are frequent
   std::vector<std::uint8_t> channel_buffer_;
   std::vector<std::uint8_t> master_buffer_;
   xcp::FrameDecoder from_channel_;
   xcp::FrameDecoder from_master_;
   ByteQueue to_master_;
   ByteQueue to_channel_;
-  int swallow_responses_ = 0;  // answers to commands the bridge sent on a vanished master's behalf
+  bool master_opened_session_ = false;  // the master sent CONNECT (and not DISCONNECT since)
+  int swallow_responses_ = 0;           // answers to commands the bridge sent on a vanished master's behalf
   std::deque<std::chrono::steady_clock::time_point> commands_in_flight_;
 
   mutable std::atomic<std::uint64_t> frames_to_master_{0}, frames_to_slave_{0}, bytes_to_master_{0}, bytes_to_slave_{0},

@@ -2,8 +2,13 @@
 
 #include "relay.hpp"
 
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
 
+#include <filesystem>
 #include <thread>
 
 #include "duet/xcp/host/master.hpp"
@@ -13,6 +18,25 @@ namespace duet::bridge {
 namespace {
 
 using namespace duet::xcp::host;
+
+// A relay serving on its own thread for as long as it exists.
+class RunningRelay {
+ public:
+  explicit RunningRelay(RelayOptions options) : relay(std::move(options)) {
+    started = relay.start().ok();
+    if (started) thread = std::thread{[this] { relay.run(); }};
+  }
+  ~RunningRelay() {
+    relay.stop();
+    if (thread.joinable()) thread.join();
+  }
+  RunningRelay(const RunningRelay&) = delete;
+  RunningRelay& operator=(const RunningRelay&) = delete;
+
+  Relay relay;
+  bool started = false;
+  std::thread thread;
+};
 
 class BridgeEndToEnd : public ::testing::Test {
  protected:
@@ -89,7 +113,13 @@ TEST_F(BridgeEndToEnd, GarbageOnTheChannelIsSkippedAndASecondMasterRefused) {
   EXPECT_EQ(relay->counters().masters_refused, 1U);
 }
 
+std::size_t open_descriptors() {
+  return static_cast<std::size_t>(
+      std::distance(std::filesystem::directory_iterator{"/proc/self/fd"}, std::filesystem::directory_iterator{}));
+}
+
 TEST_F(BridgeEndToEnd, AMasterThatVanishesIsDisconnectedAndManyMayFollow) {
+  const std::size_t descriptors_before = open_descriptors();
   {
     Master master = connect();
     ASSERT_TRUE(master.connect().ok());
@@ -108,6 +138,103 @@ TEST_F(BridgeEndToEnd, AMasterThatVanishesIsDisconnectedAndManyMayFollow) {
   ASSERT_TRUE(samples.ok());
   EXPECT_TRUE(samples.value().empty());  // the first master's DAQ was stopped on its behalf
   EXPECT_EQ(relay->counters().masters_served, 1002U);
+  EXPECT_LE(open_descriptors(), descriptors_before + 2);  // the last master's two ends, nothing leaked
+}
+
+TEST_F(BridgeEndToEnd, SplitFramesAndAMasterKilledMidFrame) {
+  {  // half a CONNECT frame, then gone
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+    ASSERT_TRUE(channel.ok());
+  }
+  const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(relay->port());
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  const std::array<std::uint8_t, 6> connect{0x02, 0x00, 0x00, 0x00, 0xFF, 0x00};
+  ASSERT_EQ(::send(socket, connect.data(), 3, 0), 3);
+  ::close(socket);  // killed mid-frame
+  std::this_thread::sleep_for(std::chrono::milliseconds{50});
+  // A master whose frames arrive a byte at a time.
+  const int slow = ::socket(AF_INET, SOCK_STREAM, 0);
+  ASSERT_EQ(::connect(slow, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  for (std::uint8_t byte : connect) {
+    ASSERT_EQ(::send(slow, &byte, 1, 0), 1);
+    std::this_thread::sleep_for(std::chrono::milliseconds{2});
+  }
+  std::array<std::uint8_t, 64> answer{};
+  pollfd readable{slow, POLLIN, 0};
+  ASSERT_EQ(::poll(&readable, 1, 1000), 1);
+  const ssize_t received = ::recv(slow, answer.data(), answer.size(), 0);
+  ::close(slow);
+  ASSERT_GE(received, 5);
+  EXPECT_EQ(answer[4], 0xFF);  // CONNECT's positive response, framed
+}
+
+TEST(BridgeRobustness, AMasterThatStopsReadingLosesDaqFramesButNotAnswers) {
+  PtyFirmware firmware;
+  firmware.start();
+  RunningRelay running{{.channel = {ChannelKind::tty, firmware.path(), 0},
+                        .channel_uri = "tty:" + firmware.path(),
+                        .listen_port = 0,
+                        .master_queue_limit = 16 * 1024,
+                        .master_send_buffer = 16 * 1024}};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  {
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, std::chrono::milliseconds{1000});
+    ASSERT_TRUE(channel.ok());
+    Master master{std::move(channel).value()};
+    ASSERT_TRUE(master.connect().ok());
+    // 40 entries of 4 bytes per step: 1 kHz of 169-byte frames while the master reads nothing for 3 s.
+    std::vector<DaqEntry> entries(40, DaqEntry{0, 0x1000, 4});
+    ASSERT_TRUE(master.start_daq({{.event = 0, .prescaler = 1, .entries = entries}}).ok());
+    std::this_thread::sleep_for(std::chrono::seconds{3});
+    // Whatever was dropped, commands still get their answers.
+    const auto status = master.command(std::vector<std::uint8_t>{0xFD}, "GET_STATUS");
+    EXPECT_TRUE(status.ok()) << status.error() << "; " << relay.status() << "; responses " << relay.counters().responses
+                             << ", gaps " << master.channel().counter_gaps() << ", received "
+                             << master.channel().bytes_received();
+    EXPECT_TRUE(master.stop_daq().ok());
+  }
+  EXPECT_GT(relay.counters().daq_frames_dropped, 0U);
+}
+
+TEST(BridgeRobustness, AChannelThatClosesIsReopenedAndServesAgain) {
+  const std::filesystem::path link =
+      std::filesystem::temp_directory_path() / ("duet_bridge_channel_" + std::to_string(::getpid()));
+  auto first = std::make_unique<PtyFirmware>();
+  first->start();
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink(first->path(), link);  // a stable name, as /dev/ttyRPMSG0 is across restarts
+  RunningRelay running{
+      {.channel = {ChannelKind::tty, link.string(), 0}, .channel_uri = "tty:" + link.string(), .listen_port = 0}};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  auto talk = [&relay] {
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, std::chrono::milliseconds{1000});
+    if (!channel.ok()) return false;
+    Master master{std::move(channel).value(), std::chrono::milliseconds{300}};
+    return master.connect().ok() && master.upload(0, 0x1000, 4).ok();
+  };
+  EXPECT_TRUE(talk());
+  first.reset();  // the firmware goes away: the channel closes
+  const auto closed_by = std::chrono::steady_clock::now() + std::chrono::seconds{2};
+  while (relay.channel_open() && std::chrono::steady_clock::now() < closed_by)
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  EXPECT_FALSE(relay.channel_open());
+  PtyFirmware second;  // restarted
+  second.start();
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink(second.path(), link);
+  const auto reopened_by = std::chrono::steady_clock::now() + std::chrono::seconds{5};
+  while (!relay.channel_open() && std::chrono::steady_clock::now() < reopened_by)
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  EXPECT_TRUE(relay.channel_open());
+  EXPECT_TRUE(talk());
+  EXPECT_EQ(relay.counters().channel_opens, 2U);
+  std::filesystem::remove(link);
 }
 
 }  // namespace

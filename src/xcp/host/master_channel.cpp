@@ -101,7 +101,7 @@ void MasterChannel::take(std::span<const std::uint8_t> bytes) {
 
 Result<std::optional<std::vector<std::uint8_t>>> MasterChannel::receive(std::chrono::milliseconds timeout) {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
-  std::array<std::uint8_t, 65536> buffer{};
+  std::vector<std::uint8_t>& buffer = receive_buffer_;
   // Answers on localhost come within tens of microseconds: ask again for a short while before sleeping in poll,
   // which would add the scheduler's wake-up time to every round trip.
   const auto spin_until =

@@ -83,8 +83,7 @@ void SlaveServer::drop_master() {
   const std::array<std::uint8_t, 1> disconnect{static_cast<std::uint8_t>(Command::disconnect)};
   const auto end_session = [&] { (void)slave_.handle(disconnect); };
   exclusive_ ? exclusive_(end_session) : end_session();
-  std::array<std::uint8_t, max_packet> discard{};
-  while (queue_.pop(discard) != 0) {
+  while (queue_.pop(packet_) != 0) {
   }
 }
 
@@ -129,8 +128,7 @@ void SlaveServer::handle_bytes(std::span<const std::uint8_t> bytes) {
 }
 
 void SlaveServer::drain_queue() {
-  std::array<std::uint8_t, max_packet> packet{};
-  while (const std::size_t size = queue_.pop(packet)) send_packet(std::span{packet}.first(size));
+  while (const std::size_t size = queue_.pop(packet_)) send_packet(std::span{packet_}.first(size));
   flush();
 }
 

@@ -42,6 +42,7 @@ class MasterChannel {
   std::uint64_t counter_gaps_ = 0;
   std::uint64_t bytes_received_ = 0;
   std::vector<std::uint8_t> decoder_buffer_;
+  std::vector<std::uint8_t> receive_buffer_ = std::vector<std::uint8_t>(65536);  // allocated once: reads are frequent
   FrameDecoder decoder_;
   std::deque<std::vector<std::uint8_t>> packets_;
 };

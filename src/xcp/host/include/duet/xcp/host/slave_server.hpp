@@ -60,6 +60,7 @@ class SlaveServer {
   std::uint16_t port_ = 0;
   std::uint16_t counter_ = 0;
   std::vector<std::uint8_t> outgoing_;
+  std::vector<std::uint8_t> packet_ = std::vector<std::uint8_t>(0x10000);  // one packet out of the queue
   std::vector<std::uint8_t> decoder_buffer_;
   FrameDecoder decoder_;
   std::vector<std::uint8_t> udp_peer_;  // sockaddr of the UDP master
