@@ -17,6 +17,8 @@ packages=(
   libasio-dev libcli11-dev nlohmann-json3-dev libyaml-cpp-dev libfmt-dev libspdlog-dev libeigen3-dev
   # tests, benchmarks and code checks
   googletest libgtest-dev libgmock-dev libbenchmark-dev clang-format clang-tidy
+  # the bridge's benchmark compares with socat
+  socat
   # fuzzing (libFuzzer comes with clang's runtime libraries)
   clang libclang-rt-14-dev
 )

@@ -126,6 +126,8 @@ class Relay {
   int retry_timer_ = -1;
   int channel_ = -1;
   int master_ = -1;
+  bool channel_watched_for_output_ = false;
+  bool master_watched_for_output_ = false;
   std::uint16_t port_ = 0;
   std::atomic<bool> running_{false};
   std::atomic<bool> channel_open_{false};

@@ -84,21 +84,25 @@ std::size_t write_frame(const Framing& framing, std::span<std::uint8_t> frame, s
 
 FrameDecoder::Frame FrameDecoder::next_frame() {
   const std::size_t header_size = framing_.header_size();
-  while (filled_ >= header_size) {
-    const HeaderFields header = read_header(framing_, buffer_.first(header_size));
+  while (buffered() >= header_size) {
+    const std::span<const std::uint8_t> held = std::span<const std::uint8_t>{buffer_}.subspan(begin_, buffered());
+    const HeaderFields header = read_header(framing_, held.first(header_size));
     if (header.length == 0 || header.length > max_packet_ || framing_.frame_size(header.length) > buffer_.size()) {
       consume(1);
       ++dropped_;
       continue;
     }
     const std::size_t size = framing_.frame_size(header.length);
-    if (filled_ < size) return {};
+    if (held.size() < size) {
+      if (begin_ + size > buffer_.size()) compact();  // make room for the rest of this frame
+      return {};
+    }
     if (framing_.checksum != FrameChecksum::none) {
       const std::size_t covered = framing_.checksum == FrameChecksum::word ? size - 2 : size - 1;
-      const std::uint16_t expected = frame_checksum(framing_, buffer_.first(covered));
+      const std::uint16_t expected = frame_checksum(framing_, held.first(covered));
       const std::uint16_t received = framing_.checksum == FrameChecksum::word
-                                         ? static_cast<std::uint16_t>(buffer_[size - 2] | (buffer_[size - 1] << 8U))
-                                         : buffer_[size - 1];
+                                         ? static_cast<std::uint16_t>(held[size - 2] | (held[size - 1] << 8U))
+                                         : held[size - 1];
       if (expected != received) {
         consume(1);
         ++dropped_;
@@ -107,12 +111,15 @@ FrameDecoder::Frame FrameDecoder::next_frame() {
     }
     return {size, header.length, header.counter};
   }
+  if (begin_ + header_size > buffer_.size()) compact();
   return {};
 }
 
-void FrameDecoder::consume(std::size_t count) {
-  for (std::size_t byte = count; byte < filled_; ++byte) buffer_[byte - count] = buffer_[byte];
-  filled_ -= count;
+void FrameDecoder::compact() {
+  const std::size_t held = buffered();
+  for (std::size_t byte = 0; byte < held; ++byte) buffer_[byte] = buffer_[begin_ + byte];
+  begin_ = 0;
+  end_ = held;
 }
 
 }  // namespace duet::xcp

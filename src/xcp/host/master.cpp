@@ -316,7 +316,8 @@ Result<std::vector<DaqSample>> Master::receive_samples(std::chrono::milliseconds
     if (!received.value()) break;
     take_asynchronous(std::move(*received.value()));
   }
-  for (;;) {  // and whatever else has arrived already
+  // And whatever else has arrived already, but no longer than asked: a flood of samples must not keep us here.
+  while (std::chrono::steady_clock::now() < deadline) {
     auto received = channel_->receive(std::chrono::milliseconds{0});
     if (!received) return Failure{received.error()};
     if (!received.value()) break;

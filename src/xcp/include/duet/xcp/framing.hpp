@@ -68,41 +68,34 @@ class FrameDecoder {
   template <typename OnPacket>
   void feed(std::span<const std::uint8_t> bytes, OnPacket&& on_packet) {
     while (!bytes.empty()) {
-      const std::size_t room = buffer_.size() - filled_;
+      if (end_ == buffer_.size()) compact();
+      const std::size_t room = buffer_.size() - end_;
       const std::size_t taken = bytes.size() < room ? bytes.size() : room;
-      for (std::size_t byte = 0; byte < taken; ++byte) buffer_[filled_ + byte] = bytes[byte];
-      filled_ += taken;
+      for (std::size_t byte = 0; byte < taken; ++byte) buffer_[end_ + byte] = bytes[byte];
+      end_ += taken;
       bytes = bytes.subspan(taken);
-      while (const Frame frame = next_frame()) {
-        on_packet(frame.counter,
-                  std::span<const std::uint8_t>{buffer_.data() + framing_.header_size(), frame.packet_size});
-        consume(frame.size);
-      }
+      deliver(on_packet);
     }
   }
 
   // Bytes thrown away while resynchronising.
   [[nodiscard]] std::size_t dropped_bytes() const { return dropped_; }
   // Bytes held for a frame that is not complete yet.
-  [[nodiscard]] std::size_t buffered() const { return filled_; }
+  [[nodiscard]] std::size_t buffered() const { return end_ - begin_; }
 
   // Gives up on what is buffered: drops bytes one at a time, still delivering any valid frame that starts behind
   // them, until nothing is left. For links that send whole frames at once: a partial frame that waits too long
   // (an inter-frame gap) was garbage that looked like a header.
   template <typename OnPacket>
   void flush_stale(OnPacket&& on_packet) {
-    while (filled_ > 0) {
+    while (buffered() > 0) {
       consume(1);
       ++dropped_;
-      while (const Frame frame = next_frame()) {
-        on_packet(frame.counter,
-                  std::span<const std::uint8_t>{buffer_.data() + framing_.header_size(), frame.packet_size});
-        consume(frame.size);
-      }
+      deliver(on_packet);
     }
   }
   // Forgets a partial frame (the link was reset).
-  void reset() { filled_ = 0; }
+  void reset() { begin_ = end_ = 0; }
 
  private:
   struct Frame {
@@ -112,15 +105,31 @@ class FrameDecoder {
     explicit operator bool() const { return size != 0; }
   };
 
-  // The complete, valid frame at the buffer's start, dropping garbage before it; an empty Frame if more bytes are
-  // needed first.
+  // Hands every complete, valid frame buffered to `on_packet`.
+  template <typename OnPacket>
+  void deliver(OnPacket& on_packet) {
+    while (const Frame frame = next_frame()) {
+      on_packet(frame.counter,
+                std::span<const std::uint8_t>{buffer_.data() + begin_ + framing_.header_size(), frame.packet_size});
+      consume(frame.size);
+    }
+  }
+
+  // The complete, valid frame at the start of what is buffered, dropping garbage before it; an empty Frame if more
+  // bytes are needed first.
   Frame next_frame();
-  void consume(std::size_t count);
+  // Frames are taken from the front by moving begin_; the bytes move down only when the buffer's end is reached.
+  void consume(std::size_t count) {
+    begin_ += count;
+    if (begin_ == end_) begin_ = end_ = 0;
+  }
+  void compact();
 
   Framing framing_;
   std::span<std::uint8_t> buffer_;
   std::size_t max_packet_;
-  std::size_t filled_ = 0;
+  std::size_t begin_ = 0;  // the first byte not taken yet
+  std::size_t end_ = 0;    // one past the last byte received
   std::size_t dropped_ = 0;
 };
 
