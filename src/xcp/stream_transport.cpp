@@ -12,16 +12,7 @@ void StreamTransport::receive(std::span<const std::uint8_t> bytes) {
 }
 
 std::size_t StreamTransport::transmit(std::span<std::uint8_t> out) {
-  std::size_t written = 0;
-  for (;;) {
-    if (pending_ == 0) pending_ = queue_.pop(packet_);
-    if (pending_ == 0) return written;
-    const std::size_t size = write_frame(framing_, out.subspan(written), counter_, packet_.first(pending_));
-    if (size == 0) return written;  // it does not fit now: keep it for the next call
-    ++counter_;
-    written += size;
-    pending_ = 0;
-  }
+  return framer_.transmit(out, [this](std::span<std::uint8_t> packet) { return queue_.pop(packet); });
 }
 
 }  // namespace duet::xcp

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "duet/xcp/framing.hpp"
+#include "duet/xcp/packet_framer.hpp"
 #include "duet/xcp/slave.hpp"
 #include "duet/xcp/transmit_queue.hpp"
 
@@ -20,11 +21,7 @@ class StreamTransport {
   // outgoing packet (MAX_DTO, or MAX_CTO if larger); `queue` is the slave's. The application owns both buffers.
   StreamTransport(Slave& slave, TransmitQueue& queue, const Framing& framing, std::span<std::uint8_t> decoder_buffer,
                   std::size_t max_cto, std::span<std::uint8_t> packet_buffer)
-      : slave_(slave),
-        queue_(queue),
-        framing_(framing),
-        decoder_(framing, decoder_buffer, max_cto),
-        packet_(packet_buffer) {}
+      : slave_(slave), queue_(queue), decoder_(framing, decoder_buffer, max_cto), framer_(framing, packet_buffer) {}
 
   // Bytes from the line, in any pieces; each complete command is handled and its response queued (a response is
   // never refused: DAQ keeps room for it).
@@ -38,11 +35,8 @@ class StreamTransport {
  private:
   Slave& slave_;
   TransmitQueue& queue_;
-  Framing framing_;
   FrameDecoder decoder_;
-  std::uint16_t counter_ = 0;
-  std::span<std::uint8_t> packet_;  // one packet between the queue and its frame
-  std::size_t pending_ = 0;         // the size of a packet taken from the queue that did not fit `out` yet
+  PacketFramer framer_;
 };
 
 }  // namespace duet::xcp

@@ -1,0 +1,213 @@
+#include "duet/app_channel/endpoint.hpp"
+
+#include <cstring>
+
+namespace duet::app_channel {
+namespace {
+
+// An answer's record: message, index, status and the widest value.
+constexpr std::size_t answer_record = xcp::TransmitQueue::record_header + 3 + 8;
+
+// Writes the little-endian fields of a packet into a buffer; past its end, writes nothing and remembers it overflowed.
+class PacketWriter {
+ public:
+  explicit PacketWriter(std::span<std::uint8_t> packet) : packet_(packet) {}
+  PacketWriter& u8(std::uint8_t value) { return bytes(&value, 1); }
+  PacketWriter& u32(std::uint32_t value) {
+    const std::uint8_t little[4] = {static_cast<std::uint8_t>(value), static_cast<std::uint8_t>(value >> 8U),
+                                    static_cast<std::uint8_t>(value >> 16U), static_cast<std::uint8_t>(value >> 24U)};
+    return bytes(little, sizeof(little));
+  }
+  PacketWriter& f64(double value) {  // both the Cortex-M4 and the PC keep doubles little-endian
+    std::uint8_t raw[8];
+    std::memcpy(raw, &value, sizeof(raw));
+    return bytes(raw, sizeof(raw));
+  }
+  PacketWriter& text(const char* value, std::size_t longest) {
+    std::size_t length = 0;
+    while (value[length] != '\0' && length < longest) ++length;
+    u8(static_cast<std::uint8_t>(length));
+    return bytes(reinterpret_cast<const std::uint8_t*>(value), length);
+  }
+  PacketWriter& bytes(const std::uint8_t* values, std::size_t count) {
+    if (written_ + count > packet_.size()) {
+      overflowed_ = true;
+      return *this;
+    }
+    std::memcpy(packet_.data() + written_, values, count);
+    written_ += count;
+    return *this;
+  }
+  // The packet's size, 0 if it did not fit.
+  [[nodiscard]] std::size_t size() const { return overflowed_ ? 0 : written_; }
+
+ private:
+  std::span<std::uint8_t> packet_;
+  std::size_t written_ = 0;
+  bool overflowed_ = false;
+};
+
+template <typename T>
+double read_as_double(const void* address) {
+  T value;
+  std::memcpy(&value, address, sizeof(T));
+  return static_cast<double>(value);
+}
+
+double to_double(ValueType type, const void* address) {
+  switch (type) {
+    case ValueType::u8: return read_as_double<std::uint8_t>(address);
+    case ValueType::i8: return read_as_double<std::int8_t>(address);
+    case ValueType::u16: return read_as_double<std::uint16_t>(address);
+    case ValueType::i16: return read_as_double<std::int16_t>(address);
+    case ValueType::u32: return read_as_double<std::uint32_t>(address);
+    case ValueType::i32: return read_as_double<std::int32_t>(address);
+    case ValueType::f32: return read_as_double<float>(address);
+    case ValueType::f64: return read_as_double<double>(address);
+  }
+  return 0;
+}
+
+template <typename T>
+void write_from_double(double value, std::uint8_t* bytes) {
+  const T converted = static_cast<T>(value);
+  std::memcpy(bytes, &converted, sizeof(T));
+}
+
+// `value`, already within the item's limits, in the item's type.
+void from_double(ValueType type, double value, std::uint8_t* bytes) {
+  switch (type) {
+    case ValueType::u8: write_from_double<std::uint8_t>(value, bytes); break;
+    case ValueType::i8: write_from_double<std::int8_t>(value, bytes); break;
+    case ValueType::u16: write_from_double<std::uint16_t>(value, bytes); break;
+    case ValueType::i16: write_from_double<std::int16_t>(value, bytes); break;
+    case ValueType::u32: write_from_double<std::uint32_t>(value, bytes); break;
+    case ValueType::i32: write_from_double<std::int32_t>(value, bytes); break;
+    case ValueType::f32: write_from_double<float>(value, bytes); break;
+    case ValueType::f64: write_from_double<double>(value, bytes); break;
+  }
+}
+
+}  // namespace
+
+Endpoint::Endpoint(const Application& application, xcp::TransmitQueue& queue, xcp::QueueLock lock,
+                   std::span<std::uint8_t> decoder_buffer, std::span<std::uint8_t> packet_buffer)
+    : application_(application),
+      queue_(queue),
+      lock_(lock),
+      decoder_(framing, decoder_buffer, max_packet),
+      framer_(framing, packet_buffer) {
+  telemetry_size_ = 1 + 4;
+  for (const Item& item : application_.telemetry) telemetry_size_ += size_of(item.type);
+}
+
+bool Endpoint::publish(std::uint32_t sample) {
+  const bool queued =
+      queue_.push(telemetry_size_ + xcp::TransmitQueue::record_header, 2 * answer_record, [&](auto& out) {
+        out.packet(telemetry_size_).u8(static_cast<std::uint8_t>(Message::telemetry));
+        out.u32(sample);
+        for (const Item& item : application_.telemetry) {
+          out.bytes(static_cast<const std::uint8_t*>(item.address), size_of(item.type));
+        }
+      });
+  if (!queued) samples_dropped_.fetch_add(1, std::memory_order_relaxed);
+  return queued;
+}
+
+void Endpoint::receive(std::span<const std::uint8_t> bytes) {
+  decoder_.feed(bytes, [this](std::uint16_t, std::span<const std::uint8_t> command) { handle(command); });
+}
+
+void Endpoint::handle(std::span<const std::uint8_t> command) {
+  switch (static_cast<Message>(command[0])) {
+    case Message::describe: announce(); break;
+    case Message::set: set(command.subspan(1)); break;
+    default: break;  // not ours to answer: the other side sends only these two
+  }
+}
+
+void Endpoint::set(std::span<const std::uint8_t> request) {
+  if (request.empty() || request[0] >= application_.parameters.size()) {
+    answer(request.empty() ? 0xFF : request[0], ParameterStatus::unknown_parameter);
+    return;
+  }
+  const std::uint8_t index = request[0];
+  const Item& parameter = application_.parameters[index];
+  const std::span<const std::uint8_t> value = request.subspan(1);
+  if (value.size() != size_of(parameter.type)) {
+    answer(index, ParameterStatus::malformed);
+    return;
+  }
+  const double asked = to_double(parameter.type, value.data());
+  ParameterStatus status = ParameterStatus::applied;
+  std::uint8_t applied[8];
+  std::memcpy(applied, value.data(), value.size());
+  if (!(asked >= parameter.minimum && asked <= parameter.maximum)) {  // NaN too
+    from_double(parameter.type, asked > parameter.maximum ? parameter.maximum : parameter.minimum, applied);
+    status = ParameterStatus::clamped;
+  }
+  // Under the lock, so that a task reading a multi-word parameter never sees half of the old and half of the new.
+  const std::uint32_t saved = lock_.lock != nullptr ? lock_.lock() : 0;
+  std::memcpy(parameter.address, applied, value.size());
+  if (lock_.unlock != nullptr) lock_.unlock(saved);
+  answer(index, status);
+}
+
+void Endpoint::answer(std::uint8_t index, ParameterStatus status) {
+  const std::size_t value_size =
+      index < application_.parameters.size() ? size_of(application_.parameters[index].type) : 0;
+  const std::size_t size = 3 + value_size;
+  (void)queue_.push(size + xcp::TransmitQueue::record_header, 0, [&](auto& out) {
+    out.packet(size).u8(static_cast<std::uint8_t>(Message::parameter)).u8(index).u8(static_cast<std::uint8_t>(status));
+    if (value_size != 0) {
+      out.bytes(static_cast<const std::uint8_t*>(application_.parameters[index].address), value_size);
+    }
+  });
+}
+
+std::size_t Endpoint::transmit(std::span<std::uint8_t> out) {
+  return framer_.transmit(out, [this](std::span<std::uint8_t> packet) {
+    if (describe_requested_.exchange(false, std::memory_order_acq_rel)) description_step_ = 1;
+    if (description_step_ != 0) return next_description_packet(packet);
+    return queue_.pop(packet);
+  });
+}
+
+// The description, one packet per step: hello, each item, described, then each parameter's value.
+std::size_t Endpoint::next_description_packet(std::span<std::uint8_t> packet) {
+  const std::size_t telemetry = application_.telemetry.size();
+  const std::size_t parameters = application_.parameters.size();
+  const std::size_t step = description_step_;
+  description_step_ = step == 1 + telemetry + parameters + 1 + parameters ? 0 : step + 1;
+  PacketWriter writer{packet};
+  if (step == 1) {
+    writer.u8(static_cast<std::uint8_t>(Message::hello)).u8(protocol_version).text(application_.name, max_name_length);
+    writer.u32(application_.telemetry_period_us)
+        .u8(static_cast<std::uint8_t>(telemetry))
+        .u8(static_cast<std::uint8_t>(parameters));
+  } else if (step <= 1 + telemetry + parameters) {
+    const bool is_telemetry = step - 2 < telemetry;
+    const std::size_t index = is_telemetry ? step - 2 : step - 2 - telemetry;
+    const Item& item = is_telemetry ? application_.telemetry[index] : application_.parameters[index];
+    writer.u8(static_cast<std::uint8_t>(Message::item))
+        .u8(static_cast<std::uint8_t>(is_telemetry ? ItemKind::telemetry : ItemKind::parameter))
+        .u8(static_cast<std::uint8_t>(index))
+        .u8(static_cast<std::uint8_t>(item.type))
+        .f64(item.minimum)
+        .f64(item.maximum)
+        .text(item.name, max_name_length)
+        .text(item.unit, max_unit_length);
+  } else if (step == 2 + telemetry + parameters) {
+    writer.u8(static_cast<std::uint8_t>(Message::described));
+  } else {
+    const std::size_t index = step - 3 - telemetry - parameters;
+    const Item& parameter = application_.parameters[index];
+    writer.u8(static_cast<std::uint8_t>(Message::parameter))
+        .u8(static_cast<std::uint8_t>(index))
+        .u8(static_cast<std::uint8_t>(ParameterStatus::reported))
+        .bytes(static_cast<const std::uint8_t*>(parameter.address), size_of(parameter.type));
+  }
+  return writer.size();
+}
+
+}  // namespace duet::app_channel

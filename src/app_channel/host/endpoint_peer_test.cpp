@@ -1,0 +1,192 @@
+// The firmware's end and the PC's end of the application channel, talking through a byte pipe.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "duet/app_channel/endpoint.hpp"
+#include "duet/app_channel/host/peer.hpp"
+
+namespace duet::app_channel {
+namespace {
+
+using host::Description;
+using host::ParameterReport;
+using host::Peer;
+using host::Sample;
+
+struct Robot {
+  float theta = 1.5F;
+  float battery = 7.4F;
+  std::uint16_t distance = 42;
+  float p = 0.0196F;
+  float i = 0.0F;
+  double d = 0.0187;
+  std::int8_t mode = 0;
+};
+
+class AppChannel : public ::testing::Test {
+ protected:
+  void exchange() {                       // firmware -> PC until nothing is left
+    std::array<std::uint8_t, 64> line{};  // a small line: frames are cut into pieces
+    while (const std::size_t sent = endpoint.transmit(line)) peer.receive(std::span{line}.first(sent));
+  }
+  void request(const std::vector<std::uint8_t>& frame) {
+    endpoint.receive(frame);
+    exchange();
+  }
+
+  Robot robot;
+  const std::array<Item, 3> telemetry{item("theta", "deg", robot.theta, -90, 90),
+                                      item("battery", "V", robot.battery, 0, 12.6),
+                                      item("distance", "cm", robot.distance, 0, 400)};
+  const std::array<Item, 4> parameters{item("P", "", robot.p, 0, 1), item("I", "", robot.i, 0, 1),
+                                       item("D", "", robot.d, 0, 1), item("mode", "", robot.mode, -1, 3)};
+  const Application application{"balbot", 10000, telemetry, parameters};
+  std::array<std::uint8_t, 512> ring{};
+  xcp::TransmitQueue queue{ring, {}};
+  std::array<std::uint8_t, decoder_buffer_size> decoder_buffer{};
+  std::array<std::uint8_t, max_packet> packet_buffer{};
+  Endpoint endpoint{application, queue, {}, decoder_buffer, packet_buffer};
+
+  std::vector<Description> descriptions;
+  std::vector<Sample> samples;
+  std::vector<ParameterReport> reports;
+  std::vector<std::string> problems;
+  Peer peer{{.description = [this](const Description& d) { descriptions.push_back(d); },
+             .telemetry = [this](const Sample& s) { samples.push_back(s); },
+             .parameter = [this](const ParameterReport& r) { reports.push_back(r); },
+             .problem = [this](const std::string& p) { problems.push_back(p); }}};
+};
+
+TEST_F(AppChannel, TheFirmwareDescribesItselfAtStart) {
+  exchange();
+  ASSERT_EQ(descriptions.size(), 1U);
+  const Description& description = descriptions[0];
+  EXPECT_EQ(description.application, "balbot");
+  EXPECT_EQ(description.telemetry_period_us, 10000U);
+  ASSERT_EQ(description.telemetry.size(), 3U);
+  EXPECT_EQ(description.telemetry[1].name, "battery");
+  EXPECT_EQ(description.telemetry[1].unit, "V");
+  EXPECT_EQ(description.telemetry[2].type, ValueType::u16);
+  EXPECT_DOUBLE_EQ(description.telemetry[1].maximum, 12.6);
+  ASSERT_EQ(description.parameters.size(), 4U);
+  EXPECT_EQ(description.parameters[2].name, "D");
+  EXPECT_EQ(description.parameters[2].type, ValueType::f64);
+  ASSERT_EQ(reports.size(), 4U);  // and every parameter's value
+  EXPECT_EQ(reports[0].status, ParameterStatus::reported);
+  EXPECT_FLOAT_EQ(static_cast<float>(*peer.parameter_values()[0]), 0.0196F);
+  EXPECT_DOUBLE_EQ(*peer.parameter_values()[2], 0.0187);
+  EXPECT_TRUE(problems.empty());
+}
+
+TEST_F(AppChannel, TelemetryArrivesAsNamedValues) {
+  exchange();
+  for (std::uint32_t step = 0; step < 5; ++step) {
+    robot.theta = static_cast<float>(step);
+    ASSERT_TRUE(endpoint.publish(step));
+  }
+  exchange();
+  ASSERT_EQ(samples.size(), 5U);
+  EXPECT_EQ(samples[3].sample, 3U);
+  EXPECT_DOUBLE_EQ(samples[3].values[0], 3.0);
+  EXPECT_FLOAT_EQ(static_cast<float>(samples[3].values[1]), 7.4F);
+  EXPECT_DOUBLE_EQ(samples[3].values[2], 42.0);
+  EXPECT_EQ(peer.counters().samples, 5U);
+  EXPECT_EQ(peer.counters().frames_lost, 0U);
+}
+
+TEST_F(AppChannel, ParametersAreSetWithinTheirLimits) {
+  exchange();
+  reports.clear();
+  request(peer.set_request("P", 0.5).value());
+  request(peer.set_request("D", 0.25).value());
+  request(peer.set_request("mode", -1).value());
+  EXPECT_FLOAT_EQ(robot.p, 0.5F);
+  EXPECT_DOUBLE_EQ(robot.d, 0.25);
+  EXPECT_EQ(robot.mode, -1);
+  ASSERT_EQ(reports.size(), 3U);
+  EXPECT_EQ(reports[1].status, ParameterStatus::applied);
+  EXPECT_DOUBLE_EQ(*reports[1].value, 0.25);
+  EXPECT_DOUBLE_EQ(*peer.parameter_values()[3], -1.0);
+}
+
+TEST_F(AppChannel, ThePcRefusesWhatTheFirmwareWouldNotTake) {
+  EXPECT_NE(peer.set_request("P", 0.5).error().find("not described"), std::string::npos);
+  exchange();
+  EXPECT_NE(peer.set_request("Q", 0.5).error().find("no parameter named 'Q'"), std::string::npos);
+  EXPECT_NE(peer.set_request("P", 2).error().find("outside its limits"), std::string::npos);
+  EXPECT_NE(peer.set_request("P", std::nan("")).error().find("not a number"), std::string::npos);
+  EXPECT_NE(peer.set_request("mode", 1.5).error().find("integer"), std::string::npos);
+}
+
+TEST_F(AppChannel, TheFirmwareClampsAndRejectsOnItsOwn) {
+  exchange();
+  reports.clear();
+  // Requests another PC might send: out of limits, a wrong index, a wrong size.
+  const auto frame = [](std::vector<std::uint8_t> packet) {
+    std::vector<std::uint8_t> bytes(framing.frame_size(packet.size()));
+    bytes.resize(xcp::write_frame(framing, bytes, 0, packet));
+    return bytes;
+  };
+  const float too_large = 5.0F;
+  std::vector<std::uint8_t> set_p{0x82, 0};
+  set_p.insert(set_p.end(), reinterpret_cast<const std::uint8_t*>(&too_large),
+               reinterpret_cast<const std::uint8_t*>(&too_large) + 4);
+  request(frame(set_p));
+  request(frame({0x82, 9, 0, 0, 0, 0}));
+  request(frame({0x82, 0, 1}));
+  request(frame({0x82}));
+  ASSERT_EQ(reports.size(), 4U);
+  EXPECT_EQ(reports[0].status, ParameterStatus::clamped);
+  EXPECT_FLOAT_EQ(robot.p, 1.0F);
+  EXPECT_EQ(reports[1].status, ParameterStatus::unknown_parameter);
+  EXPECT_EQ(reports[2].status, ParameterStatus::malformed);
+  EXPECT_EQ(reports[3].status, ParameterStatus::unknown_parameter);
+  EXPECT_FLOAT_EQ(robot.p, 1.0F);
+}
+
+TEST_F(AppChannel, ADescribeRequestRepeatsTheDescription) {
+  exchange();
+  request(peer.describe_request());
+  EXPECT_EQ(descriptions.size(), 2U);
+}
+
+TEST_F(AppChannel, GarbageAndLostBytesAreSurvived) {
+  std::array<std::uint8_t, 512> line{};
+  std::vector<std::uint8_t> stream;
+  for (std::size_t sent = endpoint.transmit(line); sent != 0; sent = endpoint.transmit(line)) {
+    stream.insert(stream.end(), line.begin(), line.begin() + static_cast<std::ptrdiff_t>(sent));
+  }
+  for (std::uint32_t step = 0; step < 20; ++step) (void)endpoint.publish(step);
+  const std::size_t description_bytes = stream.size();
+  for (std::size_t sent = endpoint.transmit(line); sent != 0; sent = endpoint.transmit(line)) {
+    stream.insert(stream.end(), line.begin(), line.begin() + static_cast<std::ptrdiff_t>(sent));
+  }
+  stream.erase(stream.begin() + static_cast<std::ptrdiff_t>(description_bytes) + 30);  // a byte lost in sample 1
+  stream.insert(stream.begin(), {0x55, 0x13, 0x00, 0xFF, 0x04});                       // noise before it all
+  peer.receive(stream);
+  ASSERT_EQ(descriptions.size(), 1U);
+  EXPECT_GE(samples.size(), 18U);  // the damaged sample is gone, the rest arrive
+  EXPECT_LT(samples.size(), 20U);
+  EXPECT_EQ(samples.back().sample, 19U);
+  EXPECT_GT(peer.counters().garbage_bytes, 0U);
+  EXPECT_GE(peer.counters().frames_lost, 1U);
+}
+
+TEST_F(AppChannel, AFullQueueDropsTelemetryButNeverAnswers) {
+  exchange();
+  reports.clear();
+  std::uint32_t published = 0;
+  while (endpoint.publish(published)) ++published;
+  EXPECT_EQ(endpoint.samples_dropped(), 1U);
+  request(peer.set_request("I", 0.1).value());
+  ASSERT_EQ(reports.size(), 1U);
+  EXPECT_EQ(reports[0].status, ParameterStatus::applied);
+  EXPECT_EQ(samples.size(), published);
+}
+
+}  // namespace
+}  // namespace duet::app_channel

@@ -1,0 +1,81 @@
+#pragma once
+// The firmware's end of the application channel: it describes the application's telemetry and parameters, sends
+// telemetry samples, and applies parameter sets within their limits. Freestanding: fixed buffers the application
+// owns, no heap; publish() may be called from an interrupt, receive() from the receive interrupt or the background
+// loop, transmit() from whoever feeds the line.
+
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "duet/app_channel/protocol.hpp"
+#include "duet/xcp/framing.hpp"
+#include "duet/xcp/packet_framer.hpp"
+#include "duet/xcp/transmit_queue.hpp"
+
+namespace duet::app_channel {
+
+// One value the application sends or accepts, and where it lives.
+struct Item {
+  const char* name;
+  const char* unit;
+  ValueType type;
+  double minimum;
+  double maximum;
+  void* address;
+};
+
+template <typename T>
+constexpr Item item(const char* name, const char* unit, T& variable, double minimum, double maximum) {
+  return {name, unit, value_type_of<T>(), minimum, maximum, &variable};
+}
+
+struct Application {
+  const char* name;
+  std::uint32_t telemetry_period_us;
+  std::span<const Item> telemetry;
+  std::span<const Item> parameters;
+};
+
+class Endpoint {
+ public:
+  // `queue` carries telemetry and answers (its lock also guards parameter writes against the tasks that read them);
+  // `decoder_buffer` holds decoder_buffer_size bytes, `packet_buffer` max_packet bytes.
+  Endpoint(const Application& application, xcp::TransmitQueue& queue, xcp::QueueLock lock,
+           std::span<std::uint8_t> decoder_buffer, std::span<std::uint8_t> packet_buffer);
+
+  // Sends the description (and every parameter's value) before anything else that is queued; done at start and when
+  // the other side asks.
+  void announce() { describe_requested_.store(true, std::memory_order_release); }
+
+  // Queues one telemetry sample; false, and counted, if the queue is full (answers keep their room).
+  bool publish(std::uint32_t sample);
+
+  // Bytes from the line, in any pieces.
+  void receive(std::span<const std::uint8_t> bytes);
+
+  // Frames what is to be sent into `out`; returns the bytes written.
+  std::size_t transmit(std::span<std::uint8_t> out);
+
+  [[nodiscard]] std::uint32_t samples_dropped() const { return samples_dropped_.load(std::memory_order_relaxed); }
+  [[nodiscard]] std::size_t garbage_bytes() const { return decoder_.dropped_bytes(); }
+
+ private:
+  void handle(std::span<const std::uint8_t> command);
+  void set(std::span<const std::uint8_t> request);
+  void answer(std::uint8_t index, ParameterStatus status);
+  std::size_t next_description_packet(std::span<std::uint8_t> packet);
+
+  Application application_;
+  xcp::TransmitQueue& queue_;
+  xcp::QueueLock lock_;
+  xcp::FrameDecoder decoder_;
+  xcp::PacketFramer framer_;
+  std::atomic<bool> describe_requested_{true};
+  std::size_t description_step_ = 0;  // 0: not describing; else the next step, counted from 1
+  std::atomic<std::uint32_t> samples_dropped_{0};
+  std::size_t telemetry_size_ = 0;  // of a telemetry packet
+};
+
+}  // namespace duet::app_channel
