@@ -1,6 +1,6 @@
 # duet_header_only_library(<target> PACKAGE <debian-package> HEADERS <path under /usr/include>...)
 #
-# Header-only Debian libraries (CLI11, asio, nlohmann-json) serve the host and the armhf Linux build alike. The host
+# Header-only Debian libraries (CLI11, nlohmann-json, Boost's Beast and Asio) serve the host and the armhf Linux build alike. The host
 # finds them in /usr/include already. A cross build must not search /usr/include, which holds the PC's C library
 # headers, so it sees just the library's own headers through a folder of symbolic links in the build tree.
 function(duet_header_only_library target)
@@ -26,3 +26,5 @@ function(duet_header_only_library target)
 endfunction()
 
 duet_header_only_library(duet_cli11 PACKAGE libcli11-dev HEADERS CLI)
+duet_header_only_library(duet_nlohmann_json PACKAGE nlohmann-json3-dev HEADERS nlohmann)
+duet_header_only_library(duet_boost_beast PACKAGE libboost-dev HEADERS boost)

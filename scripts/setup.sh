@@ -14,7 +14,7 @@ packages=(
   # running firmware without hardware
   qemu-system-arm qemu-user-static
   # host libraries
-  libasio-dev libcli11-dev nlohmann-json3-dev libyaml-cpp-dev libfmt-dev libspdlog-dev libeigen3-dev
+  libasio-dev libboost-dev libcli11-dev nlohmann-json3-dev libyaml-cpp-dev libfmt-dev libspdlog-dev libeigen3-dev
   # tests, benchmarks and code checks
   googletest libgtest-dev libgmock-dev libbenchmark-dev clang-format clang-tidy
   # the bridge's benchmark compares with socat

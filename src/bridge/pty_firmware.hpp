@@ -3,9 +3,7 @@
 // slave behind a StreamTransport on the pty's master side; the bridge opens the other side (path()). One thread does
 // the I/O and steps a model at 1 kHz: `counter` counts the steps, event 0 samples after each.
 
-#include <fcntl.h>
 #include <poll.h>
-#include <stdlib.h>
 #include <unistd.h>
 
 #include <array>
@@ -17,25 +15,18 @@
 #include <vector>
 
 #include "duet/xcp/stream_transport.hpp"
+#include "pseudo_terminal.hpp"
 
 namespace duet::bridge {
 
 class PtyFirmware {
  public:
-  PtyFirmware() {
-    pty_ = posix_openpt(O_RDWR | O_NOCTTY | O_NONBLOCK | O_CLOEXEC);
-    grantpt(pty_);
-    unlockpt(pty_);
-    path_ = ptsname(pty_);
-  }
-  ~PtyFirmware() {
-    stop();
-    if (pty_ >= 0) ::close(pty_);
-  }
+  PtyFirmware() = default;
+  ~PtyFirmware() { stop(); }
   PtyFirmware(const PtyFirmware&) = delete;
   PtyFirmware& operator=(const PtyFirmware&) = delete;
 
-  [[nodiscard]] const std::string& path() const { return path_; }
+  [[nodiscard]] const std::string& path() const { return pty_.path(); }
 
   void start() {
     running_ = true;
@@ -60,11 +51,11 @@ class PtyFirmware {
     std::vector<std::uint8_t> unsent;
     auto next_step = std::chrono::steady_clock::now();
     while (running_) {
-      pollfd watched{pty_, static_cast<short>(POLLIN | (unsent.empty() ? 0 : POLLOUT)), 0};
+      pollfd watched{pty_.descriptor(), static_cast<short>(POLLIN | (unsent.empty() ? 0 : POLLOUT)), 0};
       const auto wait =
           std::chrono::duration_cast<std::chrono::milliseconds>(next_step - std::chrono::steady_clock::now());
       ::poll(&watched, 1, wait.count() > 0 ? static_cast<int>(wait.count()) : 0);
-      const ssize_t received = ::read(pty_, input.data(), input.size());
+      const ssize_t received = ::read(pty_.descriptor(), input.data(), input.size());
       if (received > 0) transport_.receive(std::span{input}.first(static_cast<std::size_t>(received)));
       if (flood) {
         for (int sample = 0; sample < 256 && queue_.free_bytes() > 4096; ++sample) {
@@ -86,14 +77,13 @@ class PtyFirmware {
         unsent.insert(unsent.end(), output.begin(), output.begin() + static_cast<std::ptrdiff_t>(framed));
       }
       if (!unsent.empty()) {  // the pty holds a few kilobytes; keep what it does not take
-        const ssize_t written = ::write(pty_, unsent.data(), unsent.size());
+        const ssize_t written = ::write(pty_.descriptor(), unsent.data(), unsent.size());
         if (written > 0) unsent.erase(unsent.begin(), unsent.begin() + written);
       }
     }
   }
 
-  int pty_ = -1;
-  std::string path_;
+  PseudoTerminal pty_;
   std::atomic<bool> running_{false};
   std::thread thread_;
   std::vector<std::uint8_t> garbage_;

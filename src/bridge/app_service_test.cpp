@@ -1,0 +1,194 @@
+// The application channel through the bridge, in-process: the robot's application on a pty <-> AppService <->
+// WebSocket clients.
+#include "app_service.hpp"
+
+#include <boost/asio.hpp>
+#include <boost/beast/core.hpp>
+#include <boost/beast/websocket.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "pty_application.hpp"
+
+namespace duet::bridge {
+namespace {
+
+namespace asio = boost::asio;
+namespace beast = boost::beast;
+namespace websocket = beast::websocket;
+using tcp = asio::ip::tcp;
+using nlohmann::json;
+
+// A dashboard, as far as the tests need one: synchronous, every read bounded by a receive timeout.
+class WebSocketClient {
+ public:
+  explicit WebSocketClient(std::uint16_t port) {
+    socket_.next_layer().connect({asio::ip::make_address("127.0.0.1"), port});
+    const timeval patience{5, 0};
+    ::setsockopt(socket_.next_layer().native_handle(), SOL_SOCKET, SO_RCVTIMEO, &patience, sizeof(patience));
+    socket_.handshake("127.0.0.1", "/");
+  }
+  void send(const json& request) { socket_.write(asio::buffer(request.dump())); }
+  void send_text(const std::string& text) { socket_.write(asio::buffer(text)); }
+  // The next message of `type`, skipping others; none if none comes within `patience`.
+  std::optional<json> next(const std::string& type, std::chrono::seconds patience = std::chrono::seconds{5}) {
+    const auto deadline = std::chrono::steady_clock::now() + patience;
+    while (std::chrono::steady_clock::now() < deadline) {
+      beast::flat_buffer buffer;
+      beast::error_code error;
+      socket_.read(buffer, error);
+      if (error) return std::nullopt;
+      json message = json::parse(beast::buffers_to_string(buffer.data()));
+      if (message["type"] == type) return message;
+    }
+    return std::nullopt;
+  }
+  // The next report on parameter `name` that answers a set.
+  std::optional<json> answer_on(const std::string& name) {
+    while (auto report = next("parameter")) {
+      if ((*report)["name"] == name && (*report)["status"] != "reported") return report;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  asio::io_context io_;
+  websocket::stream<tcp::socket> socket_{io_};
+};
+
+class AppServiceTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    application->start();
+    AppServiceOptions options;
+    options.channel.path = application->path();
+    options.channel_uri = "tty:" + application->path();
+    options.websocket_port = 0;
+    options.extra_status = [] { return std::string{R"({"xcp": {"frames_to_master": 7}})"}; };
+    service = std::make_unique<AppService>(options);
+    ASSERT_TRUE(service->start().ok());
+    thread = std::thread{[this] { service->run(); }};
+  }
+  void TearDown() override {
+    service->stop();
+    thread.join();
+  }
+
+  std::unique_ptr<PtyApplication> application = std::make_unique<PtyApplication>();
+  std::unique_ptr<AppService> service;
+  std::thread thread;
+};
+
+TEST_F(AppServiceTest, ADashboardGetsTheDescriptionTelemetryAndSetsTheGains) {
+  WebSocketClient client{service->websocket_port()};
+  const auto description = client.next("description");
+  ASSERT_TRUE(description);
+  EXPECT_EQ((*description)["application"], "balbot");
+  ASSERT_EQ((*description)["telemetry"].size(), 3U);
+  EXPECT_EQ((*description)["telemetry"][1]["name"], "battery");
+  EXPECT_EQ((*description)["telemetry"][1]["unit"], "V");
+  EXPECT_EQ((*description)["parameters"][2]["name"], "D");
+  EXPECT_EQ((*description)["parameters"][2]["type"], "float32");
+
+  const auto sample = client.next("telemetry");
+  ASSERT_TRUE(sample);
+  ASSERT_EQ((*sample)["values"].size(), 3U);
+  EXPECT_FLOAT_EQ((*sample)["values"][1].get<float>(), 7.4F);
+
+  for (const auto& [name, value] : {std::pair{"P", 0.05}, {"I", 0.01}, {"D", 0.02}}) {
+    client.send({{"type", "set"}, {"name", name}, {"value", value}});
+    const auto answer = client.answer_on(name);
+    ASSERT_TRUE(answer) << name;
+    EXPECT_EQ((*answer)["status"], "applied");
+    EXPECT_FLOAT_EQ((*answer)["value"].get<float>(), static_cast<float>(value));
+  }
+  EXPECT_FLOAT_EQ(application->p, 0.05F);
+  EXPECT_FLOAT_EQ(application->i, 0.01F);
+  EXPECT_FLOAT_EQ(application->d, 0.02F);
+
+  client.send({{"type", "status"}});
+  const auto status = client.next("status");
+  ASSERT_TRUE(status);
+  EXPECT_TRUE((*status)["application_channel"]["open"].get<bool>());
+  EXPECT_GT((*status)["application_channel"]["samples"].get<int>(), 0);
+  EXPECT_EQ((*status)["xcp"]["frames_to_master"], 7);  // the relay's counters ride along
+}
+
+TEST_F(AppServiceTest, BadRequestsGetClearErrorsAndTheServiceGoesOn) {
+  WebSocketClient client{service->websocket_port()};
+  ASSERT_TRUE(client.next("description"));
+  client.send_text("not json");
+  EXPECT_NE((*client.next("error"))["message"].get<std::string>().find("JSON object"), std::string::npos);
+  client.send({{"type", "launch"}});
+  EXPECT_NE((*client.next("error"))["message"].get<std::string>().find("unknown request type 'launch'"),
+            std::string::npos);
+  client.send({{"type", "set"}, {"name", "Q"}, {"value", 1}});
+  EXPECT_NE((*client.next("error"))["message"].get<std::string>().find("no parameter named 'Q'"), std::string::npos);
+  client.send({{"type", "set"}, {"name", "P"}, {"value", 3}});
+  EXPECT_NE((*client.next("error"))["message"].get<std::string>().find("outside its limits"), std::string::npos);
+  client.send({{"type", "set"}, {"name", "P"}});
+  EXPECT_NE((*client.next("error"))["message"].get<std::string>().find("needs"), std::string::npos);
+  client.send({{"type", "set"}, {"name", "P"}, {"value", 0.5}});
+  ASSERT_TRUE(client.answer_on("P"));
+  EXPECT_FLOAT_EQ(application->p, 0.5F);
+}
+
+TEST_F(AppServiceTest, GarbageOnTheChannelIsSkipped) {
+  WebSocketClient client{service->websocket_port()};
+  ASSERT_TRUE(client.next("description"));
+  application->inject({0x00, 0x13, 0xFF, 0x07, 0x01, 0x02, 0x03, 0x99, 0x10, 0x00});
+  ASSERT_TRUE(client.next("telemetry"));
+  client.send({{"type", "set"}, {"name", "I"}, {"value", 0.25}});
+  ASSERT_TRUE(client.answer_on("I"));
+  client.send({{"type", "status"}});
+  EXPECT_GT((*client.next("status"))["application_channel"]["garbage_bytes"].get<int>(), 0);
+}
+
+TEST(AppServiceRestart, ARestartedApplicationIsDescribedAgainAndServes) {
+  const std::filesystem::path link =
+      std::filesystem::temp_directory_path() / ("duet_app_channel_" + std::to_string(::getpid()));
+  auto application = std::make_unique<PtyApplication>();
+  application->start();
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink(application->path(), link);  // a stable name, as /dev/ttyRPMSG1 is across restarts
+  AppServiceOptions options;
+  options.channel.path = link.string();
+  options.channel_uri = "tty:" + link.string();
+  options.websocket_port = 0;
+  AppService service{options};
+  ASSERT_TRUE(service.start().ok());
+  std::thread thread{[&service] { service.run(); }};
+
+  WebSocketClient client{service.websocket_port()};
+  ASSERT_TRUE(client.next("description"));
+  application.reset();  // the firmware stops: the channel closes
+  const auto closed = client.next("channel");
+  ASSERT_TRUE(closed);
+  EXPECT_FALSE((*closed)["open"].get<bool>());
+  application = std::make_unique<PtyApplication>();  // restarted
+  application->start();
+  std::filesystem::remove(link);
+  std::filesystem::create_symlink(application->path(), link);
+  EXPECT_TRUE(client.next("description"));  // asked for again when the channel reopened
+  client.send({{"type", "set"}, {"name", "D"}, {"value", 0.5}});
+  EXPECT_TRUE(client.answer_on("D"));
+  EXPECT_FLOAT_EQ(application->d, 0.5F);
+  client.send({{"type", "status"}});
+  EXPECT_EQ((*client.next("status"))["application_channel"]["opens"], 2);
+
+  service.stop();
+  thread.join();
+  std::filesystem::remove(link);
+}
+
+}  // namespace
+}  // namespace duet::bridge
