@@ -2,68 +2,23 @@
 // WebSocket clients.
 #include "app_service.hpp"
 
-#include <boost/asio.hpp>
-#include <boost/beast/core.hpp>
-#include <boost/beast/websocket.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
 #include <thread>
 
 #include "pty_application.hpp"
+#include "websocket_client.hpp"
 
 namespace duet::bridge {
 namespace {
 
-namespace asio = boost::asio;
-namespace beast = boost::beast;
-namespace websocket = beast::websocket;
-using tcp = asio::ip::tcp;
 using nlohmann::json;
-
-// A dashboard, as far as the tests need one: synchronous, every read bounded by a receive timeout.
-class WebSocketClient {
- public:
-  explicit WebSocketClient(std::uint16_t port) {
-    socket_.next_layer().connect({asio::ip::make_address("127.0.0.1"), port});
-    const timeval patience{5, 0};
-    ::setsockopt(socket_.next_layer().native_handle(), SOL_SOCKET, SO_RCVTIMEO, &patience, sizeof(patience));
-    socket_.handshake("127.0.0.1", "/");
-  }
-  void send(const json& request) { socket_.write(asio::buffer(request.dump())); }
-  void send_text(const std::string& text) { socket_.write(asio::buffer(text)); }
-  // The next message of `type`, skipping others; none if none comes within `patience`.
-  std::optional<json> next(const std::string& type, std::chrono::seconds patience = std::chrono::seconds{5}) {
-    const auto deadline = std::chrono::steady_clock::now() + patience;
-    while (std::chrono::steady_clock::now() < deadline) {
-      beast::flat_buffer buffer;
-      beast::error_code error;
-      socket_.read(buffer, error);
-      if (error) return std::nullopt;
-      json message = json::parse(beast::buffers_to_string(buffer.data()));
-      if (message["type"] == type) return message;
-    }
-    return std::nullopt;
-  }
-  // The next report on parameter `name` that answers a set.
-  std::optional<json> answer_on(const std::string& name) {
-    while (auto report = next("parameter")) {
-      if ((*report)["name"] == name && (*report)["status"] != "reported") return report;
-    }
-    return std::nullopt;
-  }
-
- private:
-  asio::io_context io_;
-  websocket::stream<tcp::socket> socket_{io_};
-};
 
 class AppServiceTest : public ::testing::Test {
  protected:

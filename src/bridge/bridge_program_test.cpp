@@ -9,47 +9,93 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "duet/xcp/host/master.hpp"
+#include "pty_application.hpp"
 #include "pty_firmware.hpp"
+#include "websocket_client.hpp"
 
 namespace duet::bridge {
 namespace {
 
 using namespace duet::xcp::host;
 
-// A child process with its standard error in a pipe.
+// A child process with its standard input, output and error in pipes.
 class Child {
  public:
   explicit Child(std::vector<std::string> arguments) {
-    int pipe_ends[2];
-    if (::pipe2(pipe_ends, O_CLOEXEC) != 0) return;
+    int error_pipe[2];
+    int output_pipe[2];
+    int input_pipe[2];
+    if (::pipe2(error_pipe, O_CLOEXEC) != 0 || ::pipe2(output_pipe, O_CLOEXEC) != 0 ||
+        ::pipe2(input_pipe, O_CLOEXEC) != 0) {
+      return;
+    }
     pid_ = ::fork();
     if (pid_ == 0) {
-      ::dup2(pipe_ends[1], STDERR_FILENO);
+      ::dup2(error_pipe[1], STDERR_FILENO);
+      ::dup2(output_pipe[1], STDOUT_FILENO);
+      ::dup2(input_pipe[0], STDIN_FILENO);
       std::vector<char*> argv;
       for (std::string& argument : arguments) argv.push_back(argument.data());
       argv.push_back(nullptr);
       ::execvp(argv[0], argv.data());
       ::_exit(127);
     }
-    ::close(pipe_ends[1]);
-    stderr_ = pipe_ends[0];
+    ::close(error_pipe[1]);
+    ::close(output_pipe[1]);
+    ::close(input_pipe[0]);
+    stderr_ = error_pipe[0];
+    stdout_ = output_pipe[0];
+    stdin_ = input_pipe[1];
   }
   ~Child() {
     if (pid_ > 0) {
       ::kill(pid_, SIGKILL);
       ::waitpid(pid_, nullptr, 0);
     }
-    if (stderr_ >= 0) ::close(stderr_);
+    for (const int descriptor : {stderr_, stdout_, stdin_}) {
+      if (descriptor >= 0) ::close(descriptor);
+    }
   }
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
+
+  void write_line(const std::string& line) {
+    const std::string text = line + "\n";
+    [[maybe_unused]] const ssize_t written = ::write(stdin_, text.data(), text.size());
+  }
+  // Reads standard output until `lines` complete lines have come (or the time is up).
+  std::vector<std::string> read_lines(std::size_t lines, std::chrono::seconds patience) {
+    const auto deadline = std::chrono::steady_clock::now() + patience;
+    std::vector<std::string> complete;
+    while (complete.size() < lines && std::chrono::steady_clock::now() < deadline) {
+      const std::size_t end = stdout_text_.find('\n');
+      if (end != std::string::npos) {
+        complete.push_back(stdout_text_.substr(0, end));
+        stdout_text_.erase(0, end + 1);
+        continue;
+      }
+      pollfd readable{stdout_, POLLIN, 0};
+      if (::poll(&readable, 1, 100) == 1) {
+        char buffer[4096];
+        const ssize_t received = ::read(stdout_, buffer, sizeof(buffer));
+        if (received <= 0) break;
+        stdout_text_.append(buffer, static_cast<std::size_t>(received));
+      }
+    }
+    return complete;
+  }
 
   // Reads standard error until `marker` appears (or the time is up); returns what came after it on that line.
   std::string wait_for(const std::string& marker, std::chrono::seconds patience) {
@@ -83,27 +129,36 @@ class Child {
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
   [[nodiscard]] const std::string& output() const { return output_; }
+  [[nodiscard]] pid_t pid() const { return pid_; }
 
  private:
   pid_t pid_ = -1;
   int stderr_ = -1;
+  int stdout_ = -1;
+  int stdin_ = -1;
   std::string output_;
+  std::string stdout_text_;
 };
 
-TEST(BridgeProgram, RelaysEndToEndAndStopsCleanly) {
+// The command that runs the bridge program (under its emulator, if any); none if there is no program.
+std::optional<std::vector<std::string>> bridge_command() {
   const char* program = std::getenv("DUET_BRIDGE_PROGRAM");
-  if (program == nullptr || !std::filesystem::exists(program)) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
+  if (program == nullptr || !std::filesystem::exists(program)) return std::nullopt;
+  std::vector<std::string> command;
+  if (const char* emulator = std::getenv("DUET_BRIDGE_EMULATOR"); emulator != nullptr && *emulator != '\0') {
+    command.emplace_back(emulator);
+  }
+  command.emplace_back(program);
+  return command;
+}
+
+TEST(BridgeProgram, RelaysEndToEndAndStopsCleanly) {
+  auto arguments = bridge_command();
+  if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
   PtyFirmware firmware;
   firmware.start();
-  std::vector<std::string> arguments;
-  if (const char* emulator = std::getenv("DUET_BRIDGE_EMULATOR"); emulator != nullptr && *emulator != '\0') {
-    arguments.emplace_back(emulator);
-  }
-  for (const char* argument : {program, "--channel"}) arguments.emplace_back(argument);
-  arguments.push_back("tty:" + firmware.path());
-  arguments.emplace_back("--listen");
-  arguments.emplace_back("127.0.0.1:0");
-  Child bridge{arguments};
+  arguments->insert(arguments->end(), {"--channel", "tty:" + firmware.path(), "--listen", "127.0.0.1:0"});
+  Child bridge{*arguments};
   const std::string port = bridge.wait_for("listening for an XCP master on 127.0.0.1:", std::chrono::seconds{10});
   ASSERT_FALSE(port.empty()) << bridge.output();
   ASSERT_FALSE(bridge.wait_for(" open", std::chrono::seconds{10}).empty() &&
@@ -141,6 +196,101 @@ TEST(BridgeProgram, RelaysEndToEndAndStopsCleanly) {
   EXPECT_EQ(master.channel().counter_gaps(), 0U);
   EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
   EXPECT_NE(bridge.output().find("stopped; channel open"), std::string::npos) << bridge.output();
+}
+
+// What the kernel says of a process: its resident memory in kB and its open descriptors.
+struct Footprint {
+  std::size_t resident_kb = 0;
+  std::size_t descriptors = 0;
+};
+Footprint footprint(pid_t pid) {
+  Footprint result;
+  std::ifstream status{"/proc/" + std::to_string(pid) + "/status"};
+  for (std::string line; std::getline(status, line);) {
+    if (line.rfind("VmRSS:", 0) == 0) result.resident_kb = std::stoul(line.substr(6));
+  }
+  // The fewest descriptors seen over half a second: the last master's socket closes when the bridge has seen it go.
+  const std::filesystem::path descriptors{"/proc/" + std::to_string(pid) + "/fd"};
+  result.descriptors = std::numeric_limits<std::size_t>::max();
+  for (int look = 0; look < 25; ++look) {
+    result.descriptors = std::min(
+        result.descriptors, static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator{descriptors},
+                                                                   std::filesystem::directory_iterator{})));
+    std::this_thread::sleep_for(std::chrono::milliseconds{20});
+  }
+  return result;
+}
+
+TEST(BridgeProgram, MemoryAndDescriptorsStayBoundedOverAThousandMasters) {
+  auto arguments = bridge_command();
+  if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
+  PtyFirmware firmware;
+  firmware.start();
+  arguments->insert(arguments->end(), {"--channel", "tty:" + firmware.path(), "--listen", "127.0.0.1:0"});
+  Child bridge{*arguments};
+  const std::string port_text = bridge.wait_for("listening for an XCP master on 127.0.0.1:", std::chrono::seconds{10});
+  ASSERT_FALSE(port_text.empty()) << bridge.output();
+  const auto port = static_cast<std::uint16_t>(std::stoi(port_text));
+  // Half the masters start DAQ and vanish without a word; the others disconnect properly.
+  const auto cycle = [port](int number) {
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", port}, std::chrono::milliseconds{2000});
+    if (!channel.ok()) return false;
+    Master master{std::move(channel).value(), std::chrono::milliseconds{2000}};
+    if (!master.connect().ok()) return false;
+    if (number % 2 == 0) return master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, 0x1000, 4}}}}).ok();
+    return master.disconnect().ok();
+  };
+  for (int number = 0; number < 50; ++number) ASSERT_TRUE(cycle(number)) << "warm-up " << number;
+  const Footprint before = footprint(bridge.pid());
+  for (int number = 0; number < 1000; ++number) ASSERT_TRUE(cycle(number)) << "cycle " << number;
+  const Footprint after = footprint(bridge.pid());
+  EXPECT_EQ(after.descriptors, before.descriptors);
+  EXPECT_LT(after.resident_kb, before.resident_kb + 1024) << before.resident_kb << " kB before";
+  EXPECT_TRUE(cycle(1));
+  EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
+}
+
+TEST(BridgeProgram, OffersTheApplicationChannelAsCsvAndOverWebSocket) {
+  auto arguments = bridge_command();
+  if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
+  PtyApplication application;
+  application.start();
+  arguments->insert(arguments->end(),
+                    {"--app-channel", "tty:" + application.path(), "--websocket", "127.0.0.1:0", "--csv"});
+  Child bridge{*arguments};
+  const std::string port = bridge.wait_for("WebSocket clients on 127.0.0.1:", std::chrono::seconds{10});
+  ASSERT_FALSE(port.empty()) << bridge.output();
+
+  // CSV on standard output: a header from the description, then a line per sample at 100 Hz.
+  const std::vector<std::string> lines = bridge.read_lines(101, std::chrono::seconds{10});
+  ASSERT_EQ(lines.size(), 101U) << bridge.output();
+  EXPECT_EQ(lines[0], "sample,theta [deg],battery [V],distance [cm]");
+  EXPECT_NE(lines[100].find(",7.4000001,"), std::string::npos) << lines[100];  // a float's every digit
+  std::size_t gaps = 0;
+  for (std::size_t line = 2; line < lines.size(); ++line) {
+    gaps += std::stoul(lines[line]) != std::stoul(lines[line - 1]) + 1 ? 1U : 0U;
+  }
+  EXPECT_EQ(gaps, 0U);
+
+  // Gains from standard input, and over WebSocket.
+  bridge.write_line("P=0.05");
+  bridge.write_line("I=0.01");
+  bridge.write_line("Q=1");
+  EXPECT_FALSE(bridge.wait_for("parameter I = ", std::chrono::seconds{10}).empty()) << bridge.output();
+  EXPECT_FALSE(bridge.wait_for("no parameter named 'Q'", std::chrono::seconds{10}).empty() &&
+               bridge.output().find("no parameter named 'Q'") == std::string::npos);
+  EXPECT_FLOAT_EQ(application.p, 0.05F);
+  EXPECT_FLOAT_EQ(application.i, 0.01F);
+  WebSocketClient client{static_cast<std::uint16_t>(std::stoi(port))};
+  ASSERT_TRUE(client.next("description"));
+  client.send({{"type", "set"}, {"name", "D"}, {"value", 0.02}});
+  const auto answer = client.answer_on("D");
+  ASSERT_TRUE(answer);
+  EXPECT_EQ((*answer)["status"], "applied");
+  EXPECT_FLOAT_EQ(application.d, 0.02F);
+
+  EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
+  EXPECT_NE(bridge.output().find("stopped; application channel"), std::string::npos) << bridge.output();
 }
 
 }  // namespace

@@ -1,12 +1,17 @@
-// duet-bridge: relays XCP between the real-time core's channel and a master on TCP (see relay.hpp, docs/BRIDGE.md).
+// duet-bridge: relays XCP between the real-time core's channel and a master on TCP (relay.hpp), and offers the
+// application channel over WebSocket and as CSV (app_service.hpp); docs/BRIDGE.md.
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <signal.h>
 #include <sys/utsname.h>
 
 #include <exception>
-#include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
+#include <thread>
 
+#include "app_service.hpp"
 #include "duet/version.hpp"
 #include "relay.hpp"
 
@@ -18,17 +23,79 @@ std::string machine() {
   return uname(&name) == 0 ? std::string{name.machine} : std::string{"unknown"};
 }
 
+struct Endpoint {
+  std::string address;
+  std::uint16_t port = 0;
+};
+
+// "address:port" for option `option`; localhost unless `expose`.
+duet::Result<Endpoint> parse_endpoint(const std::string& option, const std::string& text, bool expose) {
+  const std::size_t colon = text.rfind(':');
+  if (colon == std::string::npos) return duet::Failure{option + " '" + text + "': expected address:port"};
+  Endpoint endpoint{text.substr(0, colon)};
+  try {
+    const unsigned long port = std::stoul(text.substr(colon + 1));
+    if (port > 65535) throw std::out_of_range{"port"};
+    endpoint.port = static_cast<std::uint16_t>(port);
+  } catch (const std::exception&) {
+    return duet::Failure{option + " '" + text + "': the port is not a number from 0 to 65535"};
+  }
+  if (endpoint.address != "127.0.0.1" && !expose) {
+    return duet::Failure{option + " " + text + " would reach beyond this machine: add --expose to mean it"};
+  }
+  return endpoint;
+}
+
+std::string relay_status_json(const duet::bridge::Relay& relay) {
+  const duet::bridge::RelayCounters counters = relay.counters();
+  return nlohmann::json{{"xcp",
+                         {{"channel_open", relay.channel_open()},
+                          {"master_connected", relay.master_connected()},
+                          {"frames_to_master", counters.frames_to_master},
+                          {"frames_to_slave", counters.frames_to_slave},
+                          {"bytes_to_master", counters.bytes_to_master},
+                          {"bytes_to_slave", counters.bytes_to_slave},
+                          {"daq_frames_dropped", counters.daq_frames_dropped},
+                          {"garbage_bytes", counters.garbage_bytes},
+                          {"channel_opens", counters.channel_opens},
+                          {"masters_served", counters.masters_served},
+                          {"masters_refused", counters.masters_refused},
+                          {"latency_mean_us", counters.latency_mean_us},
+                          {"latency_max_us", counters.latency_max_us}}}}
+      .dump();
+}
+
+// Waits for SIGINT or SIGTERM (blocked in every thread), logging `status()` on SIGUSR1.
+void wait_for_signals(const sigset_t& signals, const std::function<std::string()>& status) {
+  for (;;) {
+    int number = 0;
+    if (sigwait(&signals, &number) != 0) return;
+    if (number != SIGUSR1) return;
+    std::cerr << "duet-bridge: " << status() << std::endl;
+  }
+}
+
 int run(int argc, char** argv) {
-  CLI::App app{"duet-bridge: relays XCP between the real-time core's channel and one master on TCP", "duet-bridge"};
+  CLI::App app{
+      "duet-bridge: relays XCP between the real-time core's channel and one master on TCP, and offers the "
+      "application channel over WebSocket and as CSV",
+      "duet-bridge"};
   app.set_version_flag("--version", "duet-bridge " + std::string{duet::version} + " on " + machine());
-  app.set_config("--config", "", "A file of option = value lines (channel, listen, expose, verbose)");
+  app.set_config("--config", "", "A file of option = value lines with the options' long names");
   std::string channel;
   std::string listen = "127.0.0.1:5555";
+  std::string app_channel;
+  std::string websocket = "127.0.0.1:8765";
+  bool no_websocket = false;
+  bool csv = false;
   bool expose = false;
   bool verbose = false;
-  app.add_option("--channel", channel, "The XCP channel: tty:/dev/ttyRPMSG0, unix:/path or tcp://host:port")
-      ->required();
-  app.add_option("--listen", listen, "Address:port for the master (localhost unless --expose)");
+  app.add_option("--channel", channel, "The XCP channel: tty:/dev/ttyRPMSG0, unix:/path or tcp://host:port");
+  app.add_option("--listen", listen, "Address:port for the XCP master (localhost unless --expose)");
+  app.add_option("--app-channel", app_channel, "The application channel: tty:/dev/ttyRPMSG1, unix:/path or tcp://...");
+  app.add_option("--websocket", websocket, "Address:port for WebSocket clients (localhost unless --expose)");
+  app.add_flag("--no-websocket", no_websocket, "Offer the application channel as CSV only");
+  app.add_flag("--csv", csv, "Print the application's telemetry as CSV on stdout; name=value lines on stdin set");
   app.add_flag("--expose", expose, "Allow listening on addresses other than 127.0.0.1 (the network)");
   app.add_flag("--verbose", verbose, "Log every master that connects and leaves");
   try {
@@ -39,35 +106,86 @@ int run(int argc, char** argv) {
     std::cerr << "duet-bridge: " << error.what() << ". See 'duet-bridge --help'.\n";
     return 2;
   }
-  auto address = duet::bridge::parse_channel(channel);
-  if (!address) {
-    std::cerr << "duet-bridge: " << address.error() << '\n';
+  if (channel.empty() && app_channel.empty()) {
+    std::cerr
+        << "duet-bridge: nothing to relay: give --channel (XCP) and/or --app-channel. See 'duet-bridge --help'.\n";
     return 2;
   }
-  const std::size_t colon = listen.rfind(':');
-  if (colon == std::string::npos) {
-    std::cerr << "duet-bridge: --listen '" << listen << "': expected address:port\n";
-    return 2;
+
+  std::optional<duet::bridge::Relay> relay;
+  if (!channel.empty()) {
+    auto address = duet::bridge::parse_channel(channel);
+    auto endpoint = parse_endpoint("--listen", listen, expose);
+    if (!address || !endpoint) {
+      std::cerr << "duet-bridge: " << (!address ? address.error() : endpoint.error()) << '\n';
+      return 2;
+    }
+    duet::bridge::RelayOptions options{.channel = address.value(), .channel_uri = channel, .verbose = verbose};
+    options.listen_address = endpoint.value().address;
+    options.listen_port = endpoint.value().port;
+    relay.emplace(options);
   }
-  duet::bridge::RelayOptions options{.channel = address.value(), .channel_uri = channel, .verbose = verbose};
-  options.listen_address = listen.substr(0, colon);
-  try {
-    options.listen_port = static_cast<std::uint16_t>(std::stoul(listen.substr(colon + 1)));
-  } catch (const std::exception&) {
-    std::cerr << "duet-bridge: --listen '" << listen << "': the port is not a number\n";
-    return 2;
+  std::optional<duet::bridge::AppService> service;
+  if (!app_channel.empty()) {
+    auto address = duet::bridge::parse_channel(app_channel);
+    auto endpoint = parse_endpoint("--websocket", websocket, expose);
+    if (!address || !endpoint) {
+      std::cerr << "duet-bridge: " << (!address ? address.error() : endpoint.error()) << '\n';
+      return 2;
+    }
+    duet::bridge::AppServiceOptions options;
+    options.channel = address.value();
+    options.channel_uri = app_channel;
+    options.listen_address = endpoint.value().address;
+    options.websocket_port = endpoint.value().port;
+    options.websocket = !no_websocket;
+    options.csv = csv;
+    options.verbose = verbose;
+    if (relay) options.extra_status = [&relay] { return relay_status_json(*relay); };
+    service.emplace(options);
   }
-  if (options.listen_address != "127.0.0.1" && !expose) {
-    std::cerr << "duet-bridge: --listen " << listen << " would reach beyond this machine: add --expose to mean it\n";
-    return 2;
+
+  // Signals go to the relay's signalfd, or to sigwait here; no thread may take them the default way.
+  sigset_t signals;
+  sigemptyset(&signals);
+  for (int number : {SIGINT, SIGTERM, SIGUSR1}) sigaddset(&signals, number);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+
+  if (relay) {
+    if (auto started = relay->start(); !started) {
+      std::cerr << "duet-bridge: " << started.error() << '\n';
+      return 1;
+    }
   }
-  duet::bridge::Relay relay{options};
-  if (auto started = relay.start(); !started) {
-    std::cerr << "duet-bridge: " << started.error() << '\n';
-    return 1;
+  std::thread service_thread;
+  if (service) {
+    if (auto started = service->start(); !started) {
+      std::cerr << "duet-bridge: " << started.error() << '\n';
+      return 1;
+    }
+    if (!no_websocket) {
+      std::cerr << "duet-bridge: WebSocket clients on " << websocket.substr(0, websocket.rfind(':')) << ':'
+                << service->websocket_port() << std::endl;
+    }
+    service_thread = std::thread{[&service] { service->run(); }};
   }
-  relay.run(true);
-  std::cerr << "duet-bridge: stopped; " << relay.status() << '\n';
+  const auto status = [&] {
+    std::string text = relay ? relay->status() : std::string{};
+    if (service) text += (text.empty() ? "" : "; ") + std::string{"application channel "} + service->status();
+    return text;
+  };
+  if (relay) {
+    relay->run(true,
+               service ? std::function<std::string()>{[&service] { return "application channel " + service->status(); }}
+                       : std::function<std::string()>{});
+  } else {
+    wait_for_signals(signals, status);
+  }
+  if (service) {
+    service->stop();
+    service_thread.join();
+  }
+  std::cerr << "duet-bridge: stopped; " << status() << '\n';
   return 0;
 }
 

@@ -25,6 +25,18 @@ namespace {
 constexpr std::size_t max_packet = 0xFFFF;
 constexpr std::chrono::milliseconds longest_retry{2000};
 constexpr std::uint8_t disconnect_command = static_cast<std::uint8_t>(xcp::Command::disconnect);
+// A master on UDP has no connection to lose: one silent this long is taken to be gone.
+constexpr std::chrono::seconds udp_master_silence{30};
+
+bool same_peer(const sockaddr_in& a, const sockaddr_in& b) {
+  return a.sin_addr.s_addr == b.sin_addr.s_addr && a.sin_port == b.sin_port;
+}
+
+std::string peer_name(const sockaddr_in& peer) {
+  char text[INET_ADDRSTRLEN] = {};
+  inet_ntop(AF_INET, &peer.sin_addr, text, sizeof(text));
+  return std::string{text} + ":" + std::to_string(ntohs(peer.sin_port));
+}
 
 bool is_answer(std::uint8_t pid) { return pid == xcp::pid::response || pid == xcp::pid::error; }
 
@@ -44,7 +56,7 @@ Relay::Relay(RelayOptions options)
       from_master_(xcp::ethernet_framing, master_buffer_, max_packet) {}
 
 Relay::~Relay() {
-  for (int descriptor : {epoll_, listener_, wake_, retry_timer_, channel_, master_}) {
+  for (int descriptor : {epoll_, listener_, udp_, wake_, retry_timer_, channel_, master_}) {
     if (descriptor >= 0) ::close(descriptor);
   }
 }
@@ -70,11 +82,15 @@ Status Relay::start() {
   socklen_t length = sizeof(address);
   getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length);
   port_ = ntohs(address.sin_port);
-  for (int descriptor : {listener_, wake_, retry_timer_}) {
+  udp_ = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);  // XCP on UDP, on the same port
+  if (::bind(udp_, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0) {
+    return Failure{options_.listen_address + ":" + std::to_string(port_) + " (UDP): " + std::strerror(errno)};
+  }
+  for (int descriptor : {listener_, udp_, wake_, retry_timer_}) {
     epoll_event event{EPOLLIN, {.fd = descriptor}};
     epoll_ctl(epoll_, EPOLL_CTL_ADD, descriptor, &event);
   }
-  log("listening for an XCP master on " + options_.listen_address + ":" + std::to_string(port_));
+  log("listening for an XCP master on " + options_.listen_address + ":" + std::to_string(port_) + " (TCP and UDP)");
   open_channel_now();
   return done();
 }
@@ -124,10 +140,8 @@ void Relay::accept_master() {
   socklen_t length = sizeof(peer);
   const int accepted = ::accept4(listener_, reinterpret_cast<sockaddr*>(&peer), &length, SOCK_CLOEXEC | SOCK_NONBLOCK);
   if (accepted < 0) return;
-  char text[INET_ADDRSTRLEN] = {};
-  inet_ntop(AF_INET, &peer.sin_addr, text, sizeof(text));
-  const std::string who = std::string{text} + ":" + std::to_string(ntohs(peer.sin_port));
-  if (master_ >= 0) {  // XCP has one master
+  const std::string who = peer_name(peer);
+  if (has_master()) {  // XCP has one master
     ::close(accepted);
     ++masters_refused_;
     log("refused a second master from " + who + ": one master at a time");
@@ -149,14 +163,25 @@ void Relay::accept_master() {
   if (options_.verbose) log("master " + who + " connected");
 }
 
-// The master went away: end its session with the slave so that DAQ stops, and swallow the answer.
 void Relay::close_master(const std::string& reason) {
   if (master_ < 0) return;
   epoll_ctl(epoll_, EPOLL_CTL_DEL, master_, nullptr);
   ::close(master_);
   master_ = -1;
-  master_connected_ = false;
   to_master_.clear();
+  master_gone(reason);
+}
+
+void Relay::forget_udp_master(const std::string& reason) {
+  if (!udp_master_) return;
+  udp_master_.reset();
+  udp_master_leaving_ = false;
+  master_gone(reason);
+}
+
+// The master went away: end its session with the slave so that DAQ stops, and swallow the answer.
+void Relay::master_gone(const std::string& reason) {
+  master_connected_ = false;
   if (options_.verbose) log("master gone (" + reason + ")");
   // Only a session the master opened needs ending; a disconnected slave would not answer, and an answer
   // expected but never coming would swallow the next master's.
@@ -224,6 +249,10 @@ void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_
     --swallow_responses_;
     return;
   }
+  if (udp_master_) {
+    send_to_udp_master(counter, packet, answer);
+    return;
+  }
   if (master_ < 0) return;
   if (!answer && packet[0] < xcp::pid::service && to_master_.size() > options_.master_queue_limit) {
     ++daq_frames_dropped_;  // the master does not keep up: drop DAQ, never answers
@@ -234,10 +263,61 @@ void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_
   ++frames_to_master_;
 }
 
+// One frame per datagram; a datagram the kernel will not take now is lost, as UDP may lose it anyway (counted if DAQ).
+void Relay::send_to_udp_master(std::uint16_t counter, std::span<const std::uint8_t> packet, bool answer) {
+  const auto header = frame_header(counter, packet.size());
+  std::array<std::uint8_t, 4 + max_datagram_packet> datagram{};
+  if (packet.size() > max_datagram_packet) return;
+  std::memcpy(datagram.data(), header.data(), header.size());
+  std::memcpy(datagram.data() + header.size(), packet.data(), packet.size());
+  const ssize_t sent = ::sendto(udp_, datagram.data(), header.size() + packet.size(), MSG_DONTWAIT,
+                                reinterpret_cast<const sockaddr*>(&*udp_master_), sizeof(sockaddr_in));
+  if (sent > 0) {
+    bytes_to_master_ += static_cast<std::uint64_t>(sent);
+    ++frames_to_master_;
+  } else if (!answer) {
+    ++daq_frames_dropped_;
+  }
+  if (answer && udp_master_leaving_) forget_udp_master("disconnected");
+}
+
+void Relay::read_udp() {
+  for (;;) {
+    sockaddr_in peer{};
+    socklen_t length = sizeof(peer);
+    const ssize_t received = ::recvfrom(udp_, read_buffer_.data(), read_buffer_.size(), MSG_DONTWAIT,
+                                        reinterpret_cast<sockaddr*>(&peer), &length);
+    if (received < 0) return;  // EAGAIN, or an ICMP error for an earlier datagram: nothing to read now
+    if (master_ >= 0 || (udp_master_ && !same_peer(*udp_master_, peer))) {  // XCP has one master
+      ++masters_refused_;
+      if (!last_refused_ || !same_peer(*last_refused_, peer)) {
+        log("refused a second master from " + peer_name(peer) + " (UDP): one master at a time");
+      }
+      last_refused_ = peer;
+      continue;
+    }
+    if (!udp_master_) {
+      udp_master_ = peer;
+      ++masters_served_;
+      master_connected_ = true;
+      if (options_.verbose) log("master " + peer_name(peer) + " (UDP) connected");
+    }
+    udp_master_heard_ = std::chrono::steady_clock::now();
+    from_master_.reset();  // a datagram holds whole frames: nothing carries over from the one before
+    from_master_.feed(
+        std::span{read_buffer_}.first(static_cast<std::size_t>(received)),
+        [this](std::uint16_t counter, std::span<const std::uint8_t> frame) { forward_to_slave(counter, frame); });
+    from_master_.reset();
+  }
+}
+
 void Relay::forward_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
   if (channel_ < 0) return;  // no slave: the master will time out, as with a dead slave
   if (packet[0] == static_cast<std::uint8_t>(xcp::Command::connect)) master_opened_session_ = true;
-  if (packet[0] == disconnect_command) master_opened_session_ = false;
+  if (packet[0] == disconnect_command) {
+    master_opened_session_ = false;
+    udp_master_leaving_ = udp_master_.has_value();  // forgotten once the answer has gone back
+  }
   enqueue_to_slave(counter, packet);
 }
 
@@ -300,7 +380,7 @@ void Relay::update_interest() {
   watch(channel_, !to_channel_.empty(), channel_watched_for_output_);
 }
 
-void Relay::run(bool handle_signals) {
+void Relay::run(bool handle_signals, const std::function<std::string()>& more_status) {
   int signals = -1;
   if (handle_signals) {
     sigset_t set;
@@ -317,7 +397,8 @@ void Relay::run(bool handle_signals) {
     // Without a partial frame waiting, sleep until something happens; with one, wake up to give up on it.
     const bool waiting =
         (channel_ >= 0 && from_channel_.buffered() > 0) || (master_ >= 0 && from_master_.buffered() > 0);
-    const int ready = epoll_wait(epoll_, events.data(), static_cast<int>(events.size()), waiting ? 25 : -1);
+    const int timeout = waiting ? 25 : udp_master_ ? 1000 : -1;
+    const int ready = epoll_wait(epoll_, events.data(), static_cast<int>(events.size()), timeout);
     if (ready < 0 && errno != EINTR) break;
     for (int index = 0; index < ready; ++index) {
       const int descriptor = events[static_cast<std::size_t>(index)].data.fd;
@@ -330,6 +411,7 @@ void Relay::run(bool handle_signals) {
         while (::read(signals, &info, sizeof(info)) == sizeof(info)) {
           if (info.ssi_signo == SIGUSR1) {
             log(status());
+            if (more_status) log(more_status());
           } else {
             running_ = false;
           }
@@ -340,11 +422,16 @@ void Relay::run(bool handle_signals) {
         if (channel_ < 0) open_channel_now();
       } else if (descriptor == listener_) {
         accept_master();
+      } else if (descriptor == udp_) {
+        read_udp();
       } else if (descriptor == channel_ && channel_ >= 0) {
         if ((what & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0) read_channel();
       } else if (descriptor == master_ && master_ >= 0) {
         if ((what & (EPOLLIN | EPOLLHUP | EPOLLERR)) != 0) read_master();
       }
+    }
+    if (udp_master_ && std::chrono::steady_clock::now() - udp_master_heard_ > udp_master_silence) {
+      forget_udp_master("silent for " + std::to_string(udp_master_silence.count()) + " s");
     }
     flush_stale_frames();
     flush_channel();

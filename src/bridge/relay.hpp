@@ -1,9 +1,11 @@
 #pragma once
-// The XCP relay: frames between the real-time core's channel and one master on TCP, in one epoll loop.
+// The XCP relay: frames between the real-time core's channel and one master on TCP or UDP, in one epoll loop.
 //
 // - Frame-aware both ways (XCP-on-TCP framing, LEN/CTR): garbage is skipped (counted), partial frames wait, frames
 //   pass unchanged.
-// - One master at a time: a second connection is closed at once, and logged.
+// - One master at a time: a second connection is closed at once, and logged; on UDP, the master is the peer of the
+//   first datagram while there is none, datagrams from others are dropped (logged once), and it is gone after its
+//   DISCONNECT has been answered or after 30 s of silence.
 // - A master that goes away (cleanly or not) is disconnected from the slave on its behalf, so that DAQ stops; the
 //   slave's answer to that is swallowed.
 // - The channel going away (closed tty, firmware restarted) is retried with back-off; the listener stays open.
@@ -14,10 +16,14 @@
 //   ends write whole frames, a partial frame still waiting after a quiet gap (20 ms) is dropped byte by byte and the
 //   frames behind it are found.
 
+#include <netinet/in.h>
+
 #include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -91,8 +97,9 @@ class Relay {
 
   // Binds the listener and tries the channel (a channel that is not there yet is retried).
   Status start();
-  // Serves until stop() (from any thread) or, with `handle_signals`, SIGINT/SIGTERM; SIGUSR1 logs the counters.
-  void run(bool handle_signals = false);
+  // Serves until stop() (from any thread) or, with `handle_signals`, SIGINT/SIGTERM; SIGUSR1 logs the counters
+  // (and `more_status()`, another service's).
+  void run(bool handle_signals = false, const std::function<std::string()>& more_status = {});
   void stop();
 
   [[nodiscard]] std::uint16_t port() const { return port_; }
@@ -107,6 +114,11 @@ class Relay {
   void close_channel(const std::string& reason);
   void accept_master();
   void close_master(const std::string& reason);
+  void forget_udp_master(const std::string& reason);
+  void master_gone(const std::string& reason);
+  void read_udp();
+  void send_to_udp_master(std::uint16_t counter, std::span<const std::uint8_t> packet, bool answer);
+  [[nodiscard]] bool has_master() const { return master_ >= 0 || udp_master_.has_value(); }
   void read_channel();
   void read_master();
   void flush_master();
@@ -126,6 +138,13 @@ class Relay {
   int retry_timer_ = -1;
   int channel_ = -1;
   int master_ = -1;
+  int udp_ = -1;
+  // A master on UDP is the peer of its datagrams: the first that sends while there is no master.
+  std::optional<sockaddr_in> udp_master_;
+  std::optional<sockaddr_in> last_refused_;  // logged once, not for every datagram
+  std::chrono::steady_clock::time_point udp_master_heard_{};
+  bool udp_master_leaving_ = false;                         // it sent DISCONNECT
+  static constexpr std::size_t max_datagram_packet = 1468;  // an Ethernet frame's UDP payload less LEN/CTR
   bool channel_watched_for_output_ = false;
   bool master_watched_for_output_ = false;
   std::uint16_t port_ = 0;

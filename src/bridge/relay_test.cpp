@@ -247,3 +247,43 @@ TEST(BridgeRobustness, AChannelThatClosesIsReopenedAndServesAgain) {
 
 }  // namespace
 }  // namespace duet::bridge
+
+namespace duet::bridge {
+namespace {
+
+TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
+  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+  ASSERT_TRUE(channel.ok()) << channel.error();
+  Master master{std::move(channel).value(), std::chrono::milliseconds{1000}};
+  ASSERT_TRUE(master.connect().ok());
+  const std::array<std::uint8_t, 4> values{1, 2, 3, 4};
+  ASSERT_TRUE(master.download(0, 0x2000, values).ok());
+  EXPECT_EQ(master.upload(0, 0x2000, 4).value(), std::vector<std::uint8_t>(values.begin(), values.end()));
+
+  ASSERT_TRUE(master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, 0x1000, 4}}}}).ok());
+  std::size_t samples = 0;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds{1};
+  while (std::chrono::steady_clock::now() < end)
+    samples += master.receive_samples(std::chrono::milliseconds{50}).value().size();
+  EXPECT_GT(samples, 900U);
+  EXPECT_EQ(master.channel().counter_gaps(), 0U);
+
+  {  // others, on TCP or UDP, are refused while it is the master
+    Master on_tcp = connect(std::chrono::milliseconds{200});
+    EXPECT_FALSE(on_tcp.connect().ok());
+    auto other = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{200});
+    ASSERT_TRUE(other.ok());
+    Master on_udp{std::move(other).value(), std::chrono::milliseconds{200}};
+    EXPECT_FALSE(on_udp.connect().ok());
+  }
+  EXPECT_GE(relay->counters().masters_refused, 2U);
+
+  ASSERT_TRUE(master.stop_daq().ok());
+  ASSERT_TRUE(master.disconnect().ok());  // answered, then the master is forgotten: the next may come
+  Master next = connect();
+  EXPECT_TRUE(next.connect().ok());
+  EXPECT_TRUE(next.upload(0, 0x1000, 4).ok());
+}
+
+}  // namespace
+}  // namespace duet::bridge
