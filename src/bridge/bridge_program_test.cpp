@@ -1,6 +1,6 @@
 // The duet-bridge program itself, as a separate process, end to end: firmware on a pty <-> duet-bridge <-> TCP <->
-// duet's master. Which program: DUET_BRIDGE_PROGRAM (and DUET_BRIDGE_EMULATOR, e.g. qemu-arm-static for the armhf
-// build); the test is skipped when the program is not there.
+// `duet xcp` (DUET_PROGRAM) and duet's master. Which program: DUET_BRIDGE_PROGRAM (and DUET_BRIDGE_EMULATOR, e.g.
+// qemu-arm-static for the armhf build); the test is skipped when the program is not there.
 
 #include <fcntl.h>
 #include <gtest/gtest.h>
@@ -20,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "duet/xcp/host/a2l.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "pty_application.hpp"
 #include "pty_firmware.hpp"
@@ -128,6 +129,22 @@ class Child {
       output_.append(buffer, static_cast<std::size_t>(received));
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
+  // Waits for the child to end by itself; returns its exit code, and keeps what it wrote (small outputs only: a
+  // full pipe would stop it).
+  int wait_for_exit() {
+    int status = 0;
+    ::waitpid(pid_, &status, 0);
+    pid_ = -1;
+    char buffer[4096];
+    ssize_t received = 0;
+    while ((received = ::read(stderr_, buffer, sizeof(buffer))) > 0)
+      output_.append(buffer, static_cast<std::size_t>(received));
+    while ((received = ::read(stdout_, buffer, sizeof(buffer))) > 0) {
+      stdout_text_.append(buffer, static_cast<std::size_t>(received));
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  [[nodiscard]] const std::string& standard_output() const { return stdout_text_; }
   [[nodiscard]] const std::string& output() const { return output_; }
   [[nodiscard]] pid_t pid() const { return pid_; }
 
@@ -152,50 +169,95 @@ std::optional<std::vector<std::string>> bridge_command() {
   return command;
 }
 
-TEST(BridgeProgram, RelaysEndToEndAndStopsCleanly) {
+// `duet xcp ...` against the bridge at `port`, with the pty firmware's A2L; returns the exit code, keeps the output.
+struct DuetRun {
+  int exit_code = -1;
+  std::string output;  // standard output, then standard error
+};
+DuetRun duet_xcp(std::vector<std::string> arguments, std::uint16_t port, const std::filesystem::path& a2l) {
+  const char* duet = std::getenv("DUET_PROGRAM");
+  std::vector<std::string> command{duet != nullptr ? duet : "duet", "xcp"};
+  command.insert(command.end(), arguments.begin(), arguments.end());
+  command.insert(command.end(), {"--a2l", a2l.string(), "--connect", "tcp://127.0.0.1:" + std::to_string(port)});
+  Child run{command};
+  DuetRun result;
+  result.exit_code = run.wait_for_exit();
+  result.output = run.standard_output() + run.output();
+  return result;
+}
+
+// The pty firmware as an A2L describes it: the step counter, sampled by event 0 every millisecond, and a gain.
+std::filesystem::path write_firmware_a2l() {
+  A2lDescription a2l;
+  a2l.module = "pty_firmware";
+  a2l.memory.push_back({.name = "parameters", .address = 0x2000, .size = 8});
+  Variable counter;
+  counter.name = "counter";
+  counter.type = DataType::uint32;
+  counter.address = 0x1000;
+  counter.maximum = 4294967295.0;
+  a2l.measurements.push_back(counter);
+  Variable gain;
+  gain.name = "gain";
+  gain.type = DataType::uint32;
+  gain.address = 0x2000;
+  gain.maximum = 1000;
+  a2l.characteristics.push_back(gain);
+  EventInfo event;
+  event.name = "1 ms";
+  event.time_cycle = 1;
+  a2l.events.push_back(event);
+  a2l.max_dto = 256;
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("duet_pty_firmware_" + std::to_string(::getpid()) + ".a2l");
+  std::ofstream{file} << write_a2l(a2l);
+  return file;
+}
+
+// The acceptance path: host-built firmware with the XCP slave <-> pty <-> duet-bridge <-> TCP <-> `duet xcp`.
+TEST(BridgeProgram, DuetXcpThroughTheBridgeReadsWritesAndRecordsTenSecondsWithoutLoss) {
   auto arguments = bridge_command();
   if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
   PtyFirmware firmware;
   firmware.start();
   arguments->insert(arguments->end(), {"--channel", "tty:" + firmware.path(), "--listen", "127.0.0.1:0"});
   Child bridge{*arguments};
-  const std::string port = bridge.wait_for("listening for an XCP master on 127.0.0.1:", std::chrono::seconds{10});
-  ASSERT_FALSE(port.empty()) << bridge.output();
+  const std::string port_text = bridge.wait_for("listening for an XCP master on 127.0.0.1:", std::chrono::seconds{10});
+  ASSERT_FALSE(port_text.empty()) << bridge.output();
   ASSERT_FALSE(bridge.wait_for(" open", std::chrono::seconds{10}).empty() &&
                bridge.output().find(" open") == std::string::npos);
+  const auto port = static_cast<std::uint16_t>(std::stoi(port_text));
+  const std::filesystem::path a2l = write_firmware_a2l();
 
-  auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", static_cast<std::uint16_t>(std::stoi(port))},
-                                     std::chrono::milliseconds{2000});
-  ASSERT_TRUE(channel.ok()) << channel.error();
-  Master master{std::move(channel).value(), std::chrono::milliseconds{2000}};
-  ASSERT_TRUE(master.connect().ok());
-  const std::array<std::uint8_t, 4> values{9, 8, 7, 6};
-  ASSERT_TRUE(master.download(0, 0x2000, values).ok());
-  EXPECT_EQ(master.upload(0, 0x2000, 4).value(), std::vector<std::uint8_t>(values.begin(), values.end()));
+  const DuetRun info = duet_xcp({"info"}, port, a2l);
+  EXPECT_EQ(info.exit_code, 0) << info.output;
+  const DuetRun write = duet_xcp({"write", "gain=42"}, port, a2l);
+  EXPECT_EQ(write.exit_code, 0) << write.output;
+  EXPECT_EQ(firmware.parameters[0], 42);
+  const DuetRun read = duet_xcp({"read", "gain"}, port, a2l);
+  EXPECT_EQ(read.exit_code, 0) << read.output;
+  EXPECT_NE(read.output.find("42"), std::string::npos) << read.output;
 
-  ASSERT_TRUE(master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, 0x1000, 4}}}}).ok());
-  std::vector<std::uint32_t> counters;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds{10};
-  while (std::chrono::steady_clock::now() < end) {
-    auto samples = master.receive_samples(std::chrono::milliseconds{50});
-    ASSERT_TRUE(samples.ok()) << samples.error();
-    for (const DaqSample& sample : samples.value()) {
-      std::uint32_t value = 0;
-      for (std::size_t byte = 0; byte < 4; ++byte)
-        value |= static_cast<std::uint32_t>(sample.bytes[byte]) << (8U * byte);
-      counters.push_back(value);
-    }
-  }
-  ASSERT_TRUE(master.stop_daq().ok());
-  ASSERT_TRUE(master.disconnect().ok());
-  ASSERT_GT(counters.size(), 9000U);
+  const std::filesystem::path csv = a2l.string() + ".csv";
+  const DuetRun record = duet_xcp(
+      {"record", "--signal", "counter", "--event", "0", "--duration", "10", "--output", csv.string()}, port, a2l);
+  EXPECT_EQ(record.exit_code, 0) << record.output;
+  std::ifstream lines{csv};
+  std::string line;
+  std::getline(lines, line);  // the header
+  std::vector<std::uint64_t> counters;
+  while (std::getline(lines, line)) counters.push_back(std::stoull(line.substr(line.find(',') + 1)));
+  EXPECT_GT(counters.size(), 9500U) << record.output;
   std::size_t gaps = 0;
   for (std::size_t index = 1; index < counters.size(); ++index)
     gaps += counters[index] != counters[index - 1] + 1 ? 1U : 0U;
-  EXPECT_EQ(gaps, 0U);
-  EXPECT_EQ(master.channel().counter_gaps(), 0U);
+  EXPECT_EQ(gaps, 0U) << record.output;
+  std::filesystem::remove(csv);
+  std::filesystem::remove(a2l);
+
   EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
   EXPECT_NE(bridge.output().find("stopped; channel open"), std::string::npos) << bridge.output();
+  EXPECT_NE(bridge.output().find("DAQ frames dropped 0"), std::string::npos) << bridge.output();
 }
 
 // What the kernel says of a process: its resident memory in kB and its open descriptors.
