@@ -123,6 +123,20 @@ TEST_F(BridgeEndToEnd, GarbageOnTheChannelIsSkippedAndASecondMasterRefused) {
   EXPECT_EQ(relay->counters().masters_refused, 1U);
 }
 
+// A TCP connection to the relay without duet's master, for bytes no master would send; -1 if it failed.
+int connect_raw(std::uint16_t port) {
+  const int socket = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(port);
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  if (::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof(address)) != 0) {
+    ::close(socket);
+    return -1;
+  }
+  return socket;
+}
+
 std::size_t open_descriptors() {
   return static_cast<std::size_t>(
       std::distance(std::filesystem::directory_iterator{"/proc/self/fd"}, std::filesystem::directory_iterator{}));
@@ -156,19 +170,15 @@ TEST_F(BridgeEndToEnd, SplitFramesAndAMasterKilledMidFrame) {
     auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
     ASSERT_TRUE(channel.ok());
   }
-  const int socket = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in address{};
-  address.sin_family = AF_INET;
-  address.sin_port = htons(relay->port());
-  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-  ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  const int socket = connect_raw(relay->port());
+  ASSERT_GE(socket, 0);
   const std::array<std::uint8_t, 6> connect{0x02, 0x00, 0x00, 0x00, 0xFF, 0x00};
   ASSERT_EQ(::send(socket, connect.data(), 3, 0), 3);
   ::close(socket);  // killed mid-frame
   std::this_thread::sleep_for(std::chrono::milliseconds{50});
   // A master whose frames arrive a byte at a time.
-  const int slow = ::socket(AF_INET, SOCK_STREAM, 0);
-  ASSERT_EQ(::connect(slow, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  const int slow = connect_raw(relay->port());
+  ASSERT_GE(slow, 0);
   for (std::uint8_t byte : connect) {
     ASSERT_EQ(::send(slow, &byte, 1, 0), 1);
     std::this_thread::sleep_for(std::chrono::milliseconds{2});
@@ -245,12 +255,6 @@ TEST(BridgeRobustness, AChannelThatClosesIsReopenedAndServesAgain) {
   std::filesystem::remove(link);
 }
 
-}  // namespace
-}  // namespace duet::bridge
-
-namespace duet::bridge {
-namespace {
-
 TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
   auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
   ASSERT_TRUE(channel.ok()) << channel.error();
@@ -283,6 +287,23 @@ TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
   Master next = connect();
   EXPECT_TRUE(next.connect().ok());
   EXPECT_TRUE(next.upload(0, 0x1000, 4).ok());
+}
+
+TEST_F(BridgeEndToEnd, GarbageFromTheMasterIsSkippedAndCommandsWorkAfterIt) {
+  const int socket = connect_raw(relay->port());
+  ASSERT_GE(socket, 0);
+  // Zero lengths (garbage) before a CONNECT frame, all in one write.
+  const std::array<std::uint8_t, 10> bytes{0x00, 0x00, 0x00, 0x00, 0x02, 0x00, 0x00, 0x00, 0xFF, 0x00};
+  ASSERT_EQ(::send(socket, bytes.data(), bytes.size(), 0), static_cast<ssize_t>(bytes.size()));
+  std::array<std::uint8_t, 64> answer{};
+  pollfd readable{socket, POLLIN, 0};
+  ASSERT_EQ(::poll(&readable, 1, 1000), 1);
+  const ssize_t received = ::recv(socket, answer.data(), answer.size(), 0);
+  ASSERT_GE(received, 5);
+  EXPECT_EQ(answer[4], 0xFF);  // CONNECT's positive response
+  EXPECT_GE(relay->counters().garbage_bytes, 4U);
+  EXPECT_EQ(relay->counters().frames_to_slave, 1U);  // nothing but the CONNECT reached the slave
+  ::close(socket);  // (after the counters: the relay then disconnects the slave on the master's behalf)
 }
 
 }  // namespace
