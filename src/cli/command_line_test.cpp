@@ -64,9 +64,9 @@ TEST(CommandLine, NoSubcommandIsAUsageError) {
 }
 
 TEST(CommandLine, PlannedSubcommandSaysSoAndFails) {
-  const Outcome outcome = run({"sched"});
+  const Outcome outcome = run({"sim"});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
-  EXPECT_EQ(outcome.err, "duet sched: not implemented yet (planned in issue #6)\n");
+  EXPECT_EQ(outcome.err, "duet sim: not implemented yet (planned in issue #7)\n");
 }
 
 }  // namespace

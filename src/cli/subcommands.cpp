@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "sched_command.hpp"
 #include "subcommand.hpp"
 #include "xcp_command.hpp"
 
@@ -21,7 +22,7 @@ constexpr Subcommand table[] = {
     {"xcp", "Talk XCP to a target: connect, read and write memory, record signals with DAQ", define_xcp_command},
     {"sim", "Simulate a model against a plant model on the PC", planned<7>},
     {"gen", "Generate freestanding C++, the A2L file and the task table from a model", planned<7>},
-    {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", planned<6>},
+    {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", define_sched_command},
     {"monitor", "Serve the dashboard for a target reached over XCP", planned<10>},
     {"model", "Check a model file and describe its blocks, signals and tasks", planned<7>},
 };

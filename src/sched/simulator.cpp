@@ -17,6 +17,7 @@ std::vector<SimulatedJob> simulate(const TaskSet& set, std::vector<Release> rele
     std::size_t task;
     SimulatedJob job;
     double remaining;
+    double resumed;  // when its current run began
   };
   std::vector<std::deque<SimulatedJob>> pending(count);  // per task, oldest first
   std::vector<Running> stack;                            // the running handler on top, the preempted below
@@ -47,7 +48,8 @@ std::vector<SimulatedJob> simulate(const TaskSet& set, std::vector<Release> rele
       SimulatedJob job = pending[*task].front();
       pending[*task].pop_front();
       job.start = now;
-      stack.push_back({*task, job, costs[*task]});
+      if (!stack.empty() && stack.back().resumed < now) stack.back().job.runs.emplace_back(stack.back().resumed, now);
+      stack.push_back({*task, job, costs[*task], now});
     }
     const double next_event = next_release < releases.size() ? releases[next_release].release : unbounded;
     if (stack.empty()) {
@@ -58,8 +60,10 @@ std::vector<SimulatedJob> simulate(const TaskSet& set, std::vector<Release> rele
     if (now + running.remaining <= next_event) {
       now += running.remaining;
       running.job.finish = now;
+      running.job.runs.emplace_back(running.resumed, now);
       finished.push_back(running.job);
       stack.pop_back();
+      if (!stack.empty()) stack.back().resumed = now;
     } else {
       running.remaining -= next_event - now;
       now = next_event;

@@ -5,6 +5,7 @@
 // C plus the core's entry and exit overheads.
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "duet/sched/task_set.hpp"
@@ -22,6 +23,7 @@ struct SimulatedJob {
   double arrival = 0;
   double start = 0;
   double finish = 0;
+  std::vector<std::pair<double, double>> runs;  // when it ran: [from, to) pieces between preemptions
   [[nodiscard]] double response() const { return finish - arrival; }
 };
 
