@@ -2,8 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <fstream>
-#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -24,19 +24,25 @@ struct SchedOptions {
   std::string svg;
 };
 
-// Levels beyond what the core implements, or shared by several handlers: said before the report.
-void check_levels(const sched::TaskSet& set, std::ostream& err, bool& fits) {
+// More group priorities than the core implements: share levels where deadlines allow, and say which.
+Result<sched::TaskSet> fit_levels(sched::TaskSet set, int first_level, std::ostream& err) {
   const int groups = 1 << (set.core.priority_bits - set.core.sub_priority_bits);
-  std::map<int, std::vector<std::string>> by_group;
-  fits = true;
-  for (const sched::Task& task : set.tasks) {
-    by_group[task.priority->group].push_back(task.name);
-    if (task.priority->group >= groups) fits = false;
+  int most = 0;
+  for (const sched::Task& task : set.tasks) most = std::max(most, task.priority->group);
+  if (most < groups) return set;
+  const int levels = groups - first_level;
+  const auto fit = levels > 0 ? sched::fit_to_levels(set, levels, first_level) : std::nullopt;
+  if (!fit) {
+    return Failure{"the priorities need group levels up to " + std::to_string(most) + ", the core has " +
+                   std::to_string(groups) + ", and no sharing of levels keeps every deadline"};
   }
-  if (!fits) {
-    err << "duet sched: the priorities need group levels up to " << by_group.rbegin()->first << ", the core has "
-        << groups << " (" << set.core.priority_bits - set.core.sub_priority_bits << " group bits)\n";
+  err << "duet sched: the core has " << groups << " group levels; sharing levels to fit:\n";
+  for (const auto& tasks : fit->shared) {
+    err << "  level " << fit->priorities[tasks.front()].group << ":";
+    for (std::size_t i : tasks) err << " '" << set.tasks[i].name << "'";
+    err << '\n';
   }
+  return sched::with_priorities(std::move(set), fit->priorities);
 }
 
 ExitCode run_sched(const SchedOptions& options, Streams streams) {
@@ -46,24 +52,35 @@ ExitCode run_sched(const SchedOptions& options, Streams streams) {
     return ExitCode::failure;
   }
   sched::TaskSet set = std::move(loaded).value();
+  const int first_level = options.first_level >= 0 ? options.first_level : options.assign == "dm" ? 1 : 0;
   if (options.assign == "dm") {
-    set =
-        sched::with_priorities(set, sched::deadline_monotonic(set, options.first_level < 0 ? 1 : options.first_level));
+    set = sched::with_priorities(set, sched::deadline_monotonic(set, first_level));
   } else if (options.assign == "opa") {
-    const auto priorities = sched::optimal_priorities(set, options.first_level < 0 ? 0 : options.first_level);
+    const auto priorities = sched::optimal_priorities(set, first_level);
     if (!priorities) {
       streams.err << "duet sched: no fixed-priority order meets every deadline (Audsley's assignment found none)\n";
       return ExitCode::failure;
     }
     set = sched::with_priorities(set, *priorities);
   }
-  auto analysis = sched::analyse(set);
-  if (!analysis) {
-    streams.err << "duet sched: " << options.file << ": " << analysis.error() << " (--assign dm or opa)\n";
+  for (const sched::Task& task : set.tasks) {
+    if (!task.priority) {
+      streams.err << "duet sched: " << options.file << ": task '" << task.name
+                  << "' has no priority: give it one, or --assign dm or opa\n";
+      return ExitCode::failure;
+    }
+  }
+  auto fitted = fit_levels(std::move(set), first_level, streams.err);
+  if (!fitted) {
+    streams.err << "duet sched: " << fitted.error() << '\n';
     return ExitCode::failure;
   }
-  bool fits = true;
-  check_levels(set, streams.err, fits);
+  set = std::move(fitted).value();
+  auto analysis = sched::analyse(set);
+  if (!analysis) {
+    streams.err << "duet sched: " << analysis.error() << '\n';
+    return ExitCode::failure;
+  }
   streams.out << (options.json ? sched::json_report(set, analysis.value()) + "\n"
                                : sched::text_report(set, analysis.value()));
   if (!options.svg.empty()) {
@@ -74,7 +91,7 @@ ExitCode run_sched(const SchedOptions& options, Streams streams) {
       return ExitCode::failure;
     }
   }
-  return analysis.value().schedulable() && fits ? ExitCode::success : ExitCode::failure;
+  return analysis.value().schedulable() ? ExitCode::success : ExitCode::failure;
 }
 
 }  // namespace

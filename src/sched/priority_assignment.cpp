@@ -88,6 +88,54 @@ std::optional<std::vector<NvicPriority>> optimal_priorities(const TaskSet& set, 
   return priorities;
 }
 
+std::optional<LevelFit> fit_to_levels(const TaskSet& set, int levels, int first_level) {
+  // Each task's rank among the distinct group priorities, most urgent 0.
+  std::vector<int> groups;
+  for (const Task& task : set.tasks) groups.push_back(task.priority->group);
+  std::vector<int> distinct = groups;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  std::vector<int> rank(set.tasks.size());
+  for (std::size_t i = 0; i < set.tasks.size(); ++i) {
+    rank[i] = static_cast<int>(std::lower_bound(distinct.begin(), distinct.end(), groups[i]) - distinct.begin());
+  }
+  const auto priorities_of = [&](const std::vector<int>& ranks) {
+    std::vector<NvicPriority> priorities;
+    for (std::size_t i = 0; i < set.tasks.size(); ++i)
+      priorities.push_back({first_level + ranks[i], set.tasks[i].priority->sub});
+    return priorities;
+  };
+  std::vector<int> original = rank;
+  int count = static_cast<int>(distinct.size());
+  while (count > levels) {
+    bool merged = false;
+    for (int upper = count - 2; upper >= 0 && !merged; --upper) {  // merge rank upper + 1 into upper
+      std::vector<int> trial = rank;
+      for (int& r : trial) r = r > upper ? r - 1 : r;
+      if (analyse(with_priorities(set, priorities_of(trial))).value().schedulable()) {
+        rank = trial;
+        merged = true;
+      }
+    }
+    if (!merged) return std::nullopt;
+    --count;
+  }
+  LevelFit fit;
+  fit.priorities = priorities_of(rank);
+  // Tasks that now share a level but did not before.
+  std::map<int, std::vector<std::size_t>> by_level;
+  for (std::size_t i = 0; i < rank.size(); ++i) by_level[rank[i]].push_back(i);
+  for (const auto& [level, tasks] : by_level) {
+    for (std::size_t i : tasks) {
+      if (original[i] != original[tasks.front()]) {
+        fit.shared.push_back(tasks);
+        break;
+      }
+    }
+  }
+  return fit;
+}
+
 TaskSet with_priorities(TaskSet set, const std::vector<NvicPriority>& priorities) {
   for (std::size_t i = 0; i < set.tasks.size() && i < priorities.size(); ++i) set.tasks[i].priority = priorities[i];
   return set;

@@ -1,6 +1,7 @@
 #pragma once
 // Giving handlers NVIC priorities (docs/SCHEDULING.md).
 
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -17,6 +18,15 @@ namespace duet::sched {
 // all unassigned tasks more urgent. Tasks of one source share a level. Levels are group priorities numbered from
 // `first_level`; none if no fixed-priority order meets every deadline.
 [[nodiscard]] std::optional<std::vector<NvicPriority>> optimal_priorities(const TaskSet& set, int first_level = 0);
+
+// Fits the set's group priorities onto `levels` NVIC group levels numbered from `first_level`, keeping their order:
+// when there are more distinct groups than levels, neighbouring groups are merged (handlers then share a level and no
+// longer preempt each other), least urgent first, as long as every deadline is still met. None if that cannot be done.
+struct LevelFit {
+  std::vector<NvicPriority> priorities;
+  std::vector<std::vector<std::size_t>> shared;  // the tasks that share a level because of the fit
+};
+[[nodiscard]] std::optional<LevelFit> fit_to_levels(const TaskSet& set, int levels, int first_level = 0);
 
 // The set with the given priorities.
 [[nodiscard]] TaskSet with_priorities(TaskSet set, const std::vector<NvicPriority>& priorities);
