@@ -25,6 +25,13 @@ TEST(Utilization, Table4Point9) {
   EXPECT_TRUE(u.passes_deadline_check());
 }
 
+TEST(Utilization, CountsTheCoresOverheads) {
+  TaskSet set = tasks_of({{1, 10}, {2, 20}});
+  set.core.entry_overhead = 0.5;
+  set.core.exit_overhead = 0.5;
+  EXPECT_DOUBLE_EQ(utilization(set).by_period, 2.0 / 10 + 3.0 / 20);
+}
+
 TEST(Utilization, LiuLaylandBoundsAndTheHyperbolicTest) {
   EXPECT_DOUBLE_EQ(liu_layland_bound(1), 1.0);
   EXPECT_NEAR(liu_layland_bound(2), 0.8284, 1e-4);

@@ -13,10 +13,12 @@ double liu_layland_bound(std::size_t tasks) {
 Utilization utilization(const TaskSet& set) {
   Utilization result;
   result.hyperbolic_product = 1.0;
+  const double overheads = set.core.entry_overhead + set.core.exit_overhead;
   for (const Task& task : set.tasks) {
-    result.by_period += task.wcet / task.period;
-    result.by_deadline += task.wcet / task.deadline;
-    result.hyperbolic_product *= task.wcet / task.period + 1.0;
+    const double cost = task.wcet + overheads;
+    result.by_period += cost / task.period;
+    result.by_deadline += cost / task.deadline;
+    result.hyperbolic_product *= cost / task.period + 1.0;
   }
   result.liu_layland_bound = liu_layland_bound(set.tasks.size());
   return result;

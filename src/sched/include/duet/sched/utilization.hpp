@@ -18,7 +18,7 @@ struct Utilization {
 };
 
 [[nodiscard]] double liu_layland_bound(std::size_t tasks);
-// Of the tasks as given (C without the core's overheads, as the thesis computed it).
+// With each C plus the core's entry and exit overheads, as the response-time analysis counts it.
 [[nodiscard]] Utilization utilization(const TaskSet& set);
 
 }  // namespace duet::sched
