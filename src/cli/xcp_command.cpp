@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "duet/support/text_file.hpp"
 #include "duet/xcp/host/a2l.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
@@ -53,11 +54,9 @@ std::string hex_bytes(const std::vector<std::uint8_t>& bytes) {
 }
 
 Result<A2lDescription> load_a2l(const std::string& file) {
-  std::ifstream in{file};
-  if (!in) return Failure{file + ": cannot be read"};
-  std::stringstream text;
-  text << in.rdbuf();
-  return read_a2l(text.str(), file);
+  auto text = read_text_file(file);
+  if (!text) return Failure{text.error()};
+  return read_a2l(text.value(), file);
 }
 
 // Everything an action needs: the A2L (if given) and a connected master.

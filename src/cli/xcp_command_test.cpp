@@ -130,7 +130,7 @@ TEST_F(XcpCommand, UsageAndConnectionErrorsAreClear) {
   EXPECT_EQ(run({"xcp", "info"}).err, "duet xcp: no slave to talk to: give --connect tcp://host:port or --a2l FILE\n");
   EXPECT_EQ(run({"xcp", "info", "--connect", "ftp://x:1"}).err,
             "duet xcp: 'ftp://x:1': unknown scheme (expected tcp://host:port or udp://host:port)\n");
-  EXPECT_EQ(run({"xcp", "list", "--a2l", "/nonexistent.a2l"}).err, "duet xcp: /nonexistent.a2l: cannot be read\n");
+  EXPECT_EQ(run({"xcp", "list", "--a2l", "/nonexistent.a2l"}).err, "duet xcp: /nonexistent.a2l: cannot open\n");
   EXPECT_EQ(run({"xcp"}).exit_code, ExitCode::usage);
   EXPECT_EQ(run({"xcp", "frobnicate"}).exit_code, ExitCode::usage);
 }

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "duet/support/text_file.hpp"
+
 namespace duet::sched {
 namespace {
 
@@ -203,11 +205,9 @@ Result<TaskSet> parse_task_file(std::string_view text, const std::string& file) 
 }
 
 Result<TaskSet> load_task_file(const std::string& path) {
-  std::ifstream in{path};
-  if (!in) return Failure{path + ": cannot open"};
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_task_file(text.str(), path);
+  auto text = read_text_file(path);
+  if (!text) return Failure{text.error()};
+  return parse_task_file(text.value(), path);
 }
 
 }  // namespace duet::sched

@@ -1,0 +1,20 @@
+#include "duet/model/diagnostic.hpp"
+
+#include <algorithm>
+
+namespace duet::model {
+
+std::string format(const std::string& file, const Diagnostic& diagnostic) {
+  std::string text =
+      file + ":" + std::to_string(diagnostic.location.line) + ":" + std::to_string(diagnostic.location.column) + ": " +
+      (diagnostic.severity == Diagnostic::Severity::error ? "error: " : "warning: ") + diagnostic.message;
+  if (!diagnostic.hint.empty()) text += " (" + diagnostic.hint + ")";
+  return text;
+}
+
+bool has_errors(const std::vector<Diagnostic>& diagnostics) {
+  return std::any_of(diagnostics.begin(), diagnostics.end(),
+                     [](const Diagnostic& d) { return d.severity == Diagnostic::Severity::error; });
+}
+
+}  // namespace duet::model

@@ -1,0 +1,110 @@
+#pragma once
+// A model as read from its file (docs/MODELS.md): blocks connected by signal names, parameters, constants, signal
+// declarations, sample times and subsystems, every element with the place in the file it came from.
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace duet::model {
+
+// 1-based, as editors count.
+struct Location {
+  int line = 0;
+  int column = 0;
+};
+
+enum class DataType : std::uint8_t { float64, float32, int8, int16, int32, uint8, uint16, uint32, boolean };
+
+// A literal: a scalar (shape {}), a vector (shape {n}) or a matrix (shape {rows, columns}), row by row.
+struct Value {
+  std::vector<double> elements;
+  std::vector<std::size_t> shape;
+};
+
+struct Parameter {
+  std::string name;
+  Value value;
+  DataType type = DataType::float64;
+  std::string unit;
+  std::optional<double> minimum;
+  std::optional<double> maximum;
+  std::string description;
+  Location location;
+};
+
+struct Constant {
+  std::string name;
+  Value value;
+  Location location;
+};
+
+struct SignalDeclaration {
+  std::string name;
+  std::optional<DataType> type;
+  std::vector<std::size_t> shape;
+  std::string unit;
+  bool measurable = false;
+  Location location;
+};
+
+// A block parameter: a literal, or the name of a model-level parameter or constant.
+struct BlockParameter {
+  std::optional<Value> literal;
+  std::string reference;
+  std::string text;  // as written, for messages (also a word like a pin name)
+  Location location;
+};
+
+// Port -> signal name.
+struct Connection {
+  std::string port;
+  std::string signal;
+  Location location;
+};
+
+struct Period {
+  enum class Kind : std::uint8_t { inherited, base, multiple, constant } kind = Kind::inherited;
+  std::int64_t multiple = 1;  // of the base period, for Kind::multiple
+  Location location;
+};
+
+struct Trigger {
+  enum class Kind : std::uint8_t { none, interrupt, edge } kind = Kind::none;
+  std::string interrupt;
+  std::optional<int> priority;  // none: `auto`
+  std::string edge;             // rising, falling, either
+  std::string signal;
+  Location location;
+};
+
+struct Block {
+  std::string name;
+  std::string type;
+  Location location;
+  Location type_location;
+  Period period;
+  std::vector<std::pair<std::string, BlockParameter>> parameters;
+  std::vector<Connection> inputs;
+  std::vector<Connection> outputs;
+  std::vector<Block> blocks;  // a Subsystem's
+  Trigger trigger;
+  std::string enable;  // a Subsystem's enabling signal
+};
+
+struct Model {
+  std::string file;
+  int version = 0;
+  std::string name;
+  std::string description;
+  double base_period_us = 0;
+  Location base_period_location;
+  std::vector<Constant> constants;
+  std::vector<Parameter> parameters;
+  std::vector<SignalDeclaration> signals;
+  std::vector<Block> blocks;
+};
+
+}  // namespace duet::model

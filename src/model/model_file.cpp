@@ -1,0 +1,362 @@
+#include "duet/model/model_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "duet/support/text_file.hpp"
+
+namespace duet::model {
+namespace {
+
+// The first problem found; caught once, at the top.
+struct Problem {
+  Diagnostic diagnostic;
+};
+
+Location location_of(const YAML::Node& node) { return {node.Mark().line + 1, node.Mark().column + 1}; }
+
+[[noreturn]] void fail(const YAML::Node& node, const std::string& message, const std::string& hint = {}) {
+  throw Problem{{Diagnostic::Severity::error, location_of(node), message, hint}};
+}
+
+bool is_identifier(const std::string& text) {
+  if (text.empty() || !(std::isalpha(static_cast<unsigned char>(text[0])) != 0 || text[0] == '_')) return false;
+  return std::all_of(text.begin(), text.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; });
+}
+
+std::string identifier(const YAML::Node& node, const std::string& what) {
+  if (!node.IsScalar()) fail(node, what + " must be a name");
+  const std::string text = node.Scalar();
+  if (!is_identifier(text)) {
+    fail(node, what + " '" + text + "' is not a name", "letters, digits and _, not starting with a digit");
+  }
+  return text;
+}
+
+void only(const YAML::Node& map, const std::string& where, std::initializer_list<const char*> known) {
+  for (const auto& entry : map) {
+    const std::string key = entry.first.Scalar();
+    if (std::none_of(known.begin(), known.end(), [&key](const char* name) { return key == name; })) {
+      std::string list;
+      for (const char* name : known) list += (list.empty() ? "" : ", ") + std::string{name};
+      fail(entry.first, "unknown field '" + key + "' in " + where, "known: " + list);
+    }
+  }
+}
+
+YAML::Node map_of(const YAML::Node& node, const std::string& what) {
+  if (!node.IsMap()) fail(node, what + " must be a map of fields");
+  return node;
+}
+
+double number(const YAML::Node& node, const std::string& what) {
+  double value = 0;
+  if (!node.IsScalar() || !YAML::convert<double>::decode(node, value) || !std::isfinite(value)) {
+    bool flag = false;
+    if (node.IsScalar() && YAML::convert<bool>::decode(node, flag)) return flag ? 1.0 : 0.0;
+    fail(node, what + " must be a number", node.IsScalar() ? "got '" + node.Scalar() + "'" : "");
+  }
+  return value;
+}
+
+// A scalar, a list (vector) or a list of equally long lists (matrix) of numbers or booleans.
+Value literal(const YAML::Node& node, const std::string& what) {
+  Value value;
+  if (node.IsScalar()) {
+    value.elements.push_back(number(node, what));
+    return value;
+  }
+  if (!node.IsSequence() || node.size() == 0) fail(node, what + " must be a number, a list or a list of rows");
+  if (node[0].IsSequence()) {
+    const std::size_t columns = node[0].size();
+    for (const auto& row : node) {
+      if (!row.IsSequence() || row.size() != columns) {
+        fail(row, what + ": every row of a matrix needs " + std::to_string(columns) + " elements");
+      }
+      for (const auto& element : row) value.elements.push_back(number(element, what));
+    }
+    value.shape = {node.size(), columns};
+    return value;
+  }
+  for (const auto& element : node) value.elements.push_back(number(element, what));
+  value.shape = {node.size()};
+  return value;
+}
+
+DataType data_type(const YAML::Node& node) {
+  static const std::map<std::string, DataType> types{
+      {"double", DataType::float64}, {"single", DataType::float32}, {"int8", DataType::int8},
+      {"int16", DataType::int16},    {"int32", DataType::int32},    {"uint8", DataType::uint8},
+      {"uint16", DataType::uint16},  {"uint32", DataType::uint32},  {"boolean", DataType::boolean}};
+  const auto found = node.IsScalar() ? types.find(node.Scalar()) : types.end();
+  if (found == types.end()) {
+    fail(node, "unknown data type '" + (node.IsScalar() ? node.Scalar() : std::string{"?"}) + "'",
+         "double, single, int8, int16, int32, uint8, uint16, uint32 or boolean");
+  }
+  return found->second;
+}
+
+std::vector<std::size_t> shape(const YAML::Node& node) {
+  std::vector<std::size_t> result;
+  const auto dimension = [](const YAML::Node& n) {
+    int size = 0;
+    if (!n.IsScalar() || !YAML::convert<int>::decode(n, size) || size < 1)
+      fail(n, "a size must be a whole number >= 1");
+    return static_cast<std::size_t>(size);
+  };
+  if (node.IsSequence()) {
+    if (node.size() < 1 || node.size() > 2) fail(node, "size: one number (vector) or two (matrix)");
+    for (const auto& n : node) result.push_back(dimension(n));
+  } else {
+    result.push_back(dimension(node));
+  }
+  return result;
+}
+
+// A number as a person writes it: 100, 0.5.
+std::string shortest(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+Period period(const YAML::Node& block, double base_period_us) {
+  Period result;
+  if (block["period"] && block["period_us"]) fail(block["period_us"], "give 'period' or 'period_us', not both");
+  if (const YAML::Node node = block["period"]) {
+    result.location = location_of(node);
+    if (node.IsScalar() && node.Scalar() == "base") {
+      result.kind = Period::Kind::base;
+    } else if (node.IsScalar() && node.Scalar() == "inherited") {
+      result.kind = Period::Kind::inherited;
+    } else if (node.IsScalar() && node.Scalar() == "constant") {
+      result.kind = Period::Kind::constant;
+    } else if (node.IsMap() && node["multiple"]) {
+      only(node, "period", {"multiple"});
+      int multiple = 0;
+      if (!YAML::convert<int>::decode(node["multiple"], multiple) || multiple < 1) {
+        fail(node["multiple"], "period: multiple must be a whole number >= 1");
+      }
+      result.kind = Period::Kind::multiple;
+      result.multiple = multiple;
+    } else {
+      fail(node, "period must be base, inherited, constant or {multiple: N}", "or give period_us");
+    }
+  } else if (const YAML::Node us = block["period_us"]) {
+    result.location = location_of(us);
+    const double value = number(us, "period_us");
+    const double multiple = value / base_period_us;
+    if (value <= 0 || std::fabs(multiple - std::round(multiple)) > 1e-9 * multiple) {
+      fail(us, "period_us " + us.Scalar() + " is not a whole multiple of the base period",
+           "base_period_us is " + shortest(base_period_us));
+    }
+    result.kind = std::llround(multiple) == 1 ? Period::Kind::base : Period::Kind::multiple;
+    result.multiple = std::llround(multiple);
+  }
+  return result;
+}
+
+std::vector<Connection> connections(const YAML::Node& node, const std::string& what) {
+  std::vector<Connection> result;
+  if (!node) return result;
+  map_of(node, what);
+  for (const auto& entry : node) {
+    result.push_back(
+        {identifier(entry.first, "a port"), identifier(entry.second, "a signal"), location_of(entry.first)});
+  }
+  return result;
+}
+
+Trigger trigger(const YAML::Node& node) {
+  Trigger result;
+  result.location = location_of(node);
+  map_of(node, "trigger");
+  if (node["interrupt"]) {
+    only(node, "trigger", {"interrupt", "priority"});
+    result.kind = Trigger::Kind::interrupt;
+    result.interrupt = identifier(node["interrupt"], "an interrupt");
+    if (const YAML::Node priority = node["priority"];
+        priority && !(priority.IsScalar() && priority.Scalar() == "auto")) {
+      int value = 0;
+      if (!YAML::convert<int>::decode(priority, value) || value < 0 || value > 255) {
+        fail(priority, "priority must be a whole number 0..255 or auto");
+      }
+      result.priority = value;
+    }
+  } else if (node["edge"]) {
+    only(node, "trigger", {"edge", "signal"});
+    result.kind = Trigger::Kind::edge;
+    result.edge = node["edge"].Scalar();
+    if (result.edge != "rising" && result.edge != "falling" && result.edge != "either") {
+      fail(node["edge"], "edge must be rising, falling or either");
+    }
+    if (!node["signal"]) fail(node, "an edge trigger needs 'signal'");
+    result.signal = identifier(node["signal"], "a signal");
+  } else {
+    fail(node, "a trigger is {interrupt: NAME, priority: P} or {edge: rising|falling|either, signal: NAME}");
+  }
+  return result;
+}
+
+Block block(const YAML::Node& node, double base_period_us) {
+  map_of(node, "a block");
+  Block result;
+  result.location = location_of(node);
+  if (!node["name"]) fail(node, "a block needs 'name'");
+  result.name = identifier(node["name"], "a block name");
+  if (!node["type"]) fail(node, "block '" + result.name + "' needs 'type'");
+  if (!node["type"].IsScalar()) fail(node["type"], "a block type must be a name");
+  result.type = node["type"].Scalar();
+  result.type_location = location_of(node["type"]);
+  only(node, "block '" + result.name + "'",
+       {"name", "type", "period", "period_us", "parameters", "inputs", "outputs", "blocks", "trigger", "enable",
+        "description"});
+  result.period = period(node, base_period_us);
+  if (const YAML::Node parameters = node["parameters"]) {
+    map_of(parameters, "parameters");
+    for (const auto& entry : parameters) {
+      BlockParameter parameter;
+      parameter.location = location_of(entry.second);
+      const std::string name = identifier(entry.first, "a parameter");
+      if (entry.second.IsScalar() && is_identifier(entry.second.Scalar()) && entry.second.Scalar() != "true" &&
+          entry.second.Scalar() != "false") {
+        parameter.reference = entry.second.Scalar();
+        parameter.text = parameter.reference;
+      } else {
+        parameter.literal = literal(entry.second, "parameter " + name);
+        parameter.text = entry.second.IsScalar() ? entry.second.Scalar() : "(list)";
+      }
+      result.parameters.emplace_back(name, parameter);
+    }
+  }
+  result.inputs = connections(node["inputs"], "inputs");
+  result.outputs = connections(node["outputs"], "outputs");
+  if (const YAML::Node blocks = node["blocks"]) {
+    if (!blocks.IsSequence()) fail(blocks, "blocks must be a list");
+    for (const auto& inner : blocks) result.blocks.push_back(block(inner, base_period_us));
+  }
+  if (node["trigger"]) result.trigger = trigger(node["trigger"]);
+  if (node["enable"]) result.enable = identifier(node["enable"], "an enabling signal");
+  return result;
+}
+
+Model model(const YAML::Node& root, const std::string& file) {
+  Model result;
+  result.file = file;
+  if (!root.IsMap()) fail(root, "a model file is a map of fields", "it starts with 'duet_model: 1'");
+  if (!root["duet_model"]) fail(root, "'duet_model' is missing", "the first line of a model is 'duet_model: 1'");
+  int version = 0;
+  if (!YAML::convert<int>::decode(root["duet_model"], version) || version != format_version) {
+    fail(root["duet_model"], "this is duet model format " + root["duet_model"].Scalar() + "; duet reads version " +
+                                 std::to_string(format_version));
+  }
+  result.version = version;
+  only(root, "the model",
+       {"duet_model", "name", "description", "base_period_us", "constants", "parameters", "signals", "blocks"});
+  if (!root["name"]) fail(root, "'name' is missing");
+  result.name = identifier(root["name"], "the model name");
+  if (root["description"]) result.description = root["description"].Scalar();
+  if (!root["base_period_us"]) fail(root, "'base_period_us' is missing", "the executive's tick, e.g. 100");
+  result.base_period_location = location_of(root["base_period_us"]);
+  result.base_period_us = number(root["base_period_us"], "base_period_us");
+  if (result.base_period_us <= 0) fail(root["base_period_us"], "base_period_us must be more than 0");
+
+  std::set<std::string> names;
+  const auto unique = [&names](const YAML::Node& key, const std::string& name) {
+    if (!names.insert(name).second)
+      fail(key, "'" + name + "' is defined twice", "constants and parameters share names");
+  };
+  if (const YAML::Node constants = root["constants"]) {
+    map_of(constants, "constants");
+    for (const auto& entry : constants) {
+      const std::string name = identifier(entry.first, "a constant");
+      unique(entry.first, name);
+      result.constants.push_back({name, literal(entry.second, "constant " + name), location_of(entry.first)});
+    }
+  }
+  if (const YAML::Node parameters = root["parameters"]) {
+    map_of(parameters, "parameters");
+    for (const auto& entry : parameters) {
+      Parameter parameter;
+      parameter.name = identifier(entry.first, "a parameter");
+      unique(entry.first, parameter.name);
+      parameter.location = location_of(entry.first);
+      const YAML::Node fields = entry.second.IsMap() ? entry.second : YAML::Node{};
+      if (!entry.second.IsMap()) {
+        parameter.value = literal(entry.second, "parameter " + parameter.name);
+      } else {
+        only(fields, "parameter " + parameter.name, {"value", "type", "unit", "min", "max", "description"});
+        if (!fields["value"]) fail(entry.second, "parameter " + parameter.name + " needs 'value'");
+        parameter.value = literal(fields["value"], "parameter " + parameter.name);
+        if (fields["type"]) parameter.type = data_type(fields["type"]);
+        if (fields["unit"]) parameter.unit = fields["unit"].Scalar();
+        if (fields["min"]) parameter.minimum = number(fields["min"], "min");
+        if (fields["max"]) parameter.maximum = number(fields["max"], "max");
+        if (fields["description"]) parameter.description = fields["description"].Scalar();
+        if (parameter.minimum && parameter.maximum && *parameter.minimum > *parameter.maximum) {
+          fail(fields["min"], "parameter " + parameter.name + ": min is above max");
+        }
+        for (double element : parameter.value.elements) {
+          if ((parameter.minimum && element < *parameter.minimum) ||
+              (parameter.maximum && element > *parameter.maximum)) {
+            fail(fields["value"], "parameter " + parameter.name + ": the value is outside [min, max]");
+          }
+        }
+      }
+      result.parameters.push_back(parameter);
+    }
+  }
+  if (const YAML::Node signals = root["signals"]) {
+    map_of(signals, "signals");
+    for (const auto& entry : signals) {
+      SignalDeclaration signal;
+      signal.name = identifier(entry.first, "a signal");
+      signal.location = location_of(entry.first);
+      map_of(entry.second, "signal " + signal.name);
+      only(entry.second, "signal " + signal.name, {"type", "size", "unit", "measurable", "description"});
+      if (entry.second["type"]) signal.type = data_type(entry.second["type"]);
+      if (entry.second["size"]) signal.shape = shape(entry.second["size"]);
+      if (entry.second["unit"]) signal.unit = entry.second["unit"].Scalar();
+      if (const YAML::Node measurable = entry.second["measurable"]) {
+        if (!YAML::convert<bool>::decode(measurable, signal.measurable))
+          fail(measurable, "measurable is true or false");
+      }
+      result.signals.push_back(signal);
+    }
+  }
+  const YAML::Node blocks = root["blocks"];
+  if (!blocks || !blocks.IsSequence() || blocks.size() == 0) fail(root, "'blocks' is missing or empty");
+  for (const auto& node : blocks) result.blocks.push_back(block(node, result.base_period_us));
+  return result;
+}
+
+}  // namespace
+
+Result<Model> parse_model(std::string_view text, const std::string& file) {
+  try {
+    const YAML::Node root = YAML::Load(std::string{text});
+    return model(root, file);
+  } catch (const Problem& problem) {
+    return Failure{format(file, problem.diagnostic)};
+  } catch (const YAML::Exception& error) {
+    return Failure{format(
+        file,
+        {Diagnostic::Severity::error, {error.mark.line + 1, error.mark.column + 1}, "not YAML: " + error.msg, ""})};
+  }
+}
+
+Result<Model> load_model(const std::string& path) {
+  auto text = read_text_file(path);
+  if (!text) return Failure{text.error()};
+  return parse_model(text.value(), path);
+}
+
+}  // namespace duet::model
