@@ -218,7 +218,8 @@ class AppService::Impl {
       for (const auto& item : description.telemetry) {
         header += "," + item.name + (item.unit.empty() ? "" : " [" + item.unit + "]");
       }
-      std::cout << header << '\n' << std::flush;
+      if (header != csv_header_) std::cout << header << '\n' << std::flush;  // a repeated description: no new header
+      csv_header_ = header;
     }
   }
 
@@ -319,6 +320,7 @@ class AppService::Impl {
   std::chrono::milliseconds retry_delay_{100};
   Peer peer_;
   std::shared_ptr<const std::string> description_message_;
+  std::string csv_header_;
   std::set<std::shared_ptr<Client>> clients_;
   std::uint16_t port_ = 0;
 

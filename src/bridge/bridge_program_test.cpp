@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -329,6 +330,9 @@ TEST(BridgeProgram, OffersTheApplicationChannelAsCsvAndOverWebSocket) {
   EXPECT_EQ(lines[0], "sample,theta [deg],battery [V],distance [cm]");
   EXPECT_NE(lines[100].find(",7.4000001,"), std::string::npos) << lines[100];  // a float's every digit
   std::size_t gaps = 0;
+  for (std::size_t line = 1; line < lines.size(); ++line) {  // the header once, then samples only
+    ASSERT_TRUE(!lines[line].empty() && std::isdigit(static_cast<unsigned char>(lines[line][0])) != 0) << lines[line];
+  }
   for (std::size_t line = 2; line < lines.size(); ++line) {
     gaps += std::stoul(lines[line]) != std::stoul(lines[line - 1]) + 1 ? 1U : 0U;
   }
