@@ -5,7 +5,7 @@
 #include <ostream>
 #include <vector>
 
-#include "closest_word.hpp"
+#include "duet/support/closest_word.hpp"
 #include "duet/version.hpp"
 
 namespace duet::cli {

@@ -1,10 +1,10 @@
-#include "closest_word.hpp"
+#include "duet/support/closest_word.hpp"
 
 #include <algorithm>
 #include <cstddef>
 #include <vector>
 
-namespace duet::cli {
+namespace duet {
 namespace {
 
 // Optimal string alignment distance: Levenshtein plus transposition of two adjacent letters ("smi" for "sim").
@@ -44,4 +44,4 @@ std::optional<std::string_view> closest_word(std::string_view word, std::span<co
   return closest;
 }
 
-}  // namespace duet::cli
+}  // namespace duet

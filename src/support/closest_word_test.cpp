@@ -1,11 +1,11 @@
-#include "closest_word.hpp"
+#include "duet/support/closest_word.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <string_view>
 
-namespace duet::cli {
+namespace duet {
 namespace {
 
 constexpr std::array<std::string_view, 6> commands{"xcp", "sim", "gen", "sched", "monitor", "model"};
@@ -25,4 +25,4 @@ TEST(ClosestWord, SuggestsNothingForUnrelatedWords) {
 }
 
 }  // namespace
-}  // namespace duet::cli
+}  // namespace duet

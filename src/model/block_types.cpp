@@ -1,0 +1,66 @@
+#include "duet/model/block_types.hpp"
+
+#include <algorithm>
+
+namespace duet::model {
+namespace {
+
+// Sources have no inputs; delays and integrators' outputs come from their state (no direct feedthrough).
+const std::vector<BlockType> table{
+    {"Constant", {}, {"y"}, {{"value"}}},
+    {"Gain", {"u"}, {"y"}, {{"k"}}},
+    {"Sum", {}, {"y"}, {{"signs", false}}, true, true},
+    {"Product", {}, {"y"}, {}, true, true},
+    {"Not", {"u"}, {"y"}, {}},
+    {"Logic", {}, {"y"}, {{"operator"}}, true, true},
+    {"Compare", {"u"}, {"y"}, {{"operator"}, {"value"}}},
+    {"Switch", {"on", "condition", "off"}, {"y"}, {}},
+    {"Saturation", {"u"}, {"y"}, {{"lower"}, {"upper"}}},
+    {"Abs", {"u"}, {"y"}, {}},
+    {"Atan2", {"y_in", "x_in"}, {"y"}, {}},
+    {"Convert", {"u"}, {"y"}, {{"type"}}},
+    {"Mux", {}, {"y"}, {}, true, true},
+    {"Demux", {"u"}, {"y1", "y2", "y3", "y4"}, {}},
+    {"Selector", {"u", "index"}, {"y"}, {}},
+    {"Lookup", {"index"}, {"y"}, {{"table"}}},
+    {"Counter", {}, {"y"}, {{"limit"}, {"initial", false}}, false},
+    {"UnitDelay", {"u"}, {"y"}, {{"initial", false}}, false},
+    {"DiscreteIntegrator",
+     {"u"},
+     {"y"},
+     {{"gain", false}, {"initial", false}, {"lower", false}, {"upper", false}},
+     false},
+    {"DiscreteDerivative", {"u"}, {"y"}, {{"gain", false}}},
+    {"DiscretePid",
+     {"error"},
+     {"y"},
+     {{"p"}, {"i", false}, {"d", false}, {"n", false}, {"lower", false}, {"upper", false}}},
+    {"MatrixMultiply", {"a", "b"}, {"y"}, {}},
+    {"RateTransition", {"u"}, {"y"}, {{"mode", false}}, false},
+    {"Outport", {"u"}, {}, {}},
+    // Hardware: each port implements them (docs/MODELS.md).
+    {"GpioIn", {}, {"y"}, {{"pin"}}},
+    {"GpioOut", {"u"}, {}, {{"pin"}}},
+    {"PwmOut", {"duty"}, {}, {{"timer"}, {"channel"}, {"frequency_hz"}}},
+    {"InputCapture", {}, {"count", "edge"}, {{"timer"}, {"channel"}}},
+    {"SpiDma", {"transmit"}, {"received"}, {{"spi"}, {"size"}}},
+    {"Exti", {}, {"level"}, {{"line"}}},
+    {"AdcDma", {}, {"samples"}, {{"adc"}, {"channel"}, {"count"}}},
+    {"IpcSend", {}, {}, {{"channel"}}, true, true},
+    {"IpcReceive", {}, {"y"}, {{"channel"}, {"size"}}},
+    // Instances declare their own ports.
+    {"Subsystem", {}, {}, {}, true, false, true},
+    {"Code", {}, {}, {}, true, false, true},
+};
+
+}  // namespace
+
+std::span<const BlockType> block_types() { return table; }
+
+const BlockType* find_block_type(std::string_view name) {
+  const auto found =
+      std::find_if(table.begin(), table.end(), [name](const BlockType& type) { return type.name == name; });
+  return found == table.end() ? nullptr : &*found;
+}
+
+}  // namespace duet::model

@@ -1,0 +1,34 @@
+#pragma once
+// The block library as validation sees it: each type's ports and parameters, and whether its outputs depend on its
+// inputs within a step (direct feedthrough), which orders execution and finds algebraic loops. What the blocks
+// compute lives in src/blocks; this table only describes them.
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace duet::model {
+
+struct ParameterSpec {
+  std::string_view name;
+  bool required = true;
+};
+
+struct BlockType {
+  std::string_view name;
+  std::vector<std::string_view> inputs;  // fixed port names; see variadic_inputs
+  std::vector<std::string_view> outputs;
+  std::vector<ParameterSpec> parameters;
+  bool direct_feedthrough = true;
+  // Inputs u1, u2, ... in any number >= 2 (Sum, Product, Mux), instead of `inputs`.
+  bool variadic_inputs = false;
+  // Ports and parameters are the instance's own (Subsystem, Code): not checked against the table.
+  bool user_defined_ports = false;
+};
+
+[[nodiscard]] std::span<const BlockType> block_types();
+[[nodiscard]] const BlockType* find_block_type(std::string_view name);
+
+}  // namespace duet::model
