@@ -141,6 +141,9 @@ void Relay::accept_master() {
   const int accepted = ::accept4(listener_, reinterpret_cast<sockaddr*>(&peer), &length, SOCK_CLOEXEC | SOCK_NONBLOCK);
   if (accepted < 0) return;
   const std::string who = peer_name(peer);
+  // The master may have closed in the same instant (a master reconnecting at once): take its end of file first, so
+  // that its successor is not refused.
+  if (master_ >= 0) read_master();
   if (has_master()) {  // XCP has one master
     ::close(accepted);
     ++masters_refused_;
