@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "model_command.hpp"
 #include "sched_command.hpp"
 #include "subcommand.hpp"
 #include "xcp_command.hpp"
@@ -24,7 +25,7 @@ constexpr Subcommand table[] = {
     {"gen", "Generate freestanding C++, the A2L file and the task table from a model", planned<7>},
     {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", define_sched_command},
     {"monitor", "Serve the dashboard for a target reached over XCP", planned<10>},
-    {"model", "Check a model file and describe its blocks, signals and tasks", planned<7>},
+    {"model", "Check a model file and describe its blocks, signals and tasks", define_model_command},
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "duet/model/block_types.hpp"
+#include "duet/model/rates.hpp"
 #include "duet/support/closest_word.hpp"
 
 namespace duet::model {
@@ -293,6 +294,13 @@ class Validator {
 
 }  // namespace
 
-std::vector<Diagnostic> validate(const Model& model) { return Validator{model}.run(); }
+std::vector<Diagnostic> validate(const Model& model) {
+  std::vector<Diagnostic> diagnostics = Validator{model}.run();
+  if (!has_errors(diagnostics)) {  // rates are only meaningful between blocks that are all there and connected
+    const RateAnalysis rates = analyse_rates(model);
+    diagnostics.insert(diagnostics.end(), rates.diagnostics.begin(), rates.diagnostics.end());
+  }
+  return diagnostics;
+}
 
 }  // namespace duet::model

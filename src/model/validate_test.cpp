@@ -99,6 +99,24 @@ const Case cases[] = {
      "m.yaml:5:3: warning: constant 'n' is not used (remove it, or use it in a block)\n"
      "m.yaml:7:3: warning: signal 'theta' is declared but nothing drives it (remove the declaration, or drive the "
      "signal)\n"},
+    {"rate_crossing", "",
+     "  - {name: fast, type: Counter, parameters: {limit: 10}, outputs: {y: n}}\n"
+     "  - {name: slow, type: Gain, period: {multiple: 10}, parameters: {k: 2}, inputs: {u: n}, outputs: {y: m}}\n",
+     "m.yaml:6:83: error: rate crossing: block 'slow' (1000 us) reads signal 'n' of block 'fast' (100 us) directly "
+     "(put a RateTransition between them)\n"},
+    {"inherited_mixed_rates", "",
+     "  - {name: fast, type: Counter, parameters: {limit: 10}, outputs: {y: a}}\n"
+     "  - {name: slow, type: Counter, period_us: 1000, parameters: {limit: 10}, outputs: {y: b}}\n"
+     "  - {name: s, type: Sum, inputs: {u1: a, u2: b}, outputs: {y: c}}\n",
+     "m.yaml:7:42: error: rate crossing: block 's' (100 us) reads signal 'b' of block 'slow' (1000 us) directly (put a "
+     "RateTransition between them)\n"},
+    {"interrupt_reads_periodic", "",
+     "  - {name: fast, type: Counter, parameters: {limit: 10}, outputs: {y: n}}\n"
+     "  - name: isr\n    type: Subsystem\n    trigger: {interrupt: EXTI0, priority: 5}\n    inputs: {count: n}\n"
+     "    blocks:\n"
+     "      - {name: pin, type: GpioOut, parameters: {pin: PA5}, inputs: {u: count}}\n",
+     "m.yaml:11:69: error: the interrupt task 'EXTI0' reads signal 'n' of the periodic block 'fast' (100 us) directly "
+     "(put a RateTransition (mode: latest) between them)\n"},
 };
 
 class Invalid : public ::testing::TestWithParam<Case> {};

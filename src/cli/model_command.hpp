@@ -1,0 +1,10 @@
+#pragma once
+// `duet model`: check a model file and show its tasks (docs/MODELS.md).
+
+#include "subcommand.hpp"
+
+namespace duet::cli {
+
+Action define_model_command(CLI::App& command);
+
+}  // namespace duet::cli

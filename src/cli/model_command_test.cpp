@@ -1,0 +1,49 @@
+// `duet model check` as a user types it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "run_for_test.hpp"
+
+namespace duet::cli {
+namespace {
+
+class ModelCommand : public ::testing::Test {
+ protected:
+  void write(const std::string& text) { std::ofstream{file} << text; }
+  void TearDown() override { std::filesystem::remove(file); }
+  const std::string file =
+      (std::filesystem::temp_directory_path() / ("duet_model_" + std::to_string(::getpid()) + ".yaml")).string();
+};
+
+TEST_F(ModelCommand, CheckListsTheTasksOfAValidModel) {
+  write(
+      "duet_model: 1\nname: blink\nbase_period_us: 100\nblocks:\n"
+      "  - {name: toggle, type: Not, inputs: {u: old}, outputs: {y: state}}\n"
+      "  - {name: delay, type: UnitDelay, period: {multiple: 10}, inputs: {u: state}, outputs: {y: old}}\n"
+      "  - {name: pin, type: GpioOut, parameters: {pin: PA5}, inputs: {u: state}}\n");
+  const Outcome outcome = run({"model", "check", file});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.out, "blink: 3 blocks, 1 tasks\n  rate 10: every 1000 us\n");
+  EXPECT_EQ(outcome.err, "");
+}
+
+TEST_F(ModelCommand, CheckNamesEveryProblemAndFails) {
+  write(
+      "duet_model: 1\nname: blink\nbase_period_us: 100\nparameters:\n  K: 2\nblocks:\n"
+      "  - {name: pin, type: GpioOut, parameters: {pin: PA5}, inputs: {u: state}}\n");
+  const Outcome outcome = run({"model", "check", file});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, file +
+                             ":7:65: error: input 'u' of block 'pin' reads signal 'state', which nothing drives "
+                             "(an output of a block, or of the subsystem's inputs, must drive it)\n" +
+                             file + ":5:3: warning: parameter 'K' is not used (remove it, or use it in a block)\n");
+  EXPECT_EQ(run({"model", "check", "/nonexistent.yaml"}).err, "/nonexistent.yaml: cannot open\n");
+  write("duet_model: 2\n");
+  EXPECT_EQ(run({"model", "check", file}).err,
+            file + ":1:13: error: this is duet model format 2; duet reads version 1\n");
+}
+
+}  // namespace
+}  // namespace duet::cli
