@@ -5,6 +5,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "duet/model/model_file.hpp"
 #include "duet/model/rates.hpp"
@@ -13,7 +14,14 @@
 namespace duet::cli {
 namespace {
 
-// Diagnostics on standard error; with none that is an error, the task table on standard output.
+std::string join(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text.empty() ? "(no blocks)" : text;
+}
+
+// Diagnostics on standard error; with none that is an error, the task table with each task's blocks in execution
+// order on standard output.
 ExitCode check(const std::string& file, Streams streams) {
   auto model = model::load_model(file);
   if (!model) {
@@ -29,12 +37,15 @@ ExitCode check(const std::string& file, Streams streams) {
   for (const model::Task& task : rates.tasks) {
     streams.out << "  " << task.name << ": ";
     if (task.rate.kind == model::Rate::Kind::periodic) {
-      streams.out << "every " << task.period_us << " us\n";
+      streams.out << "every " << task.period_us << " us";
     } else {
       streams.out << "interrupt " << task.rate.interrupt << ", priority "
-                  << (task.priority ? std::to_string(*task.priority) : std::string{"auto"}) << '\n';
+                  << (task.priority ? std::to_string(*task.priority) : std::string{"auto"});
     }
+    streams.out << ": " << join(task.blocks) << '\n';
   }
+  if (!rates.constant_blocks.empty())
+    streams.out << "  once, at initialisation: " << join(rates.constant_blocks) << '\n';
   return ExitCode::success;
 }
 

@@ -25,7 +25,7 @@ TEST_F(ModelCommand, CheckListsTheTasksOfAValidModel) {
       "  - {name: pin, type: GpioOut, parameters: {pin: PA5}, inputs: {u: state}}\n");
   const Outcome outcome = run({"model", "check", file});
   EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
-  EXPECT_EQ(outcome.out, "blink: 3 blocks, 1 tasks\n  rate 10: every 1000 us\n");
+  EXPECT_EQ(outcome.out, "blink: 3 blocks, 1 tasks\n  rate 10: every 1000 us: delay, toggle, pin\n");
   EXPECT_EQ(outcome.err, "");
 }
 

@@ -4,56 +4,49 @@
 #include <set>
 #include <sstream>
 
+#include "duet/model/block_types.hpp"
+#include "flat_model.hpp"
+
 namespace duet::model {
 namespace {
 
-struct Input {
-  std::string signal;  // global name, resolved
-  Location location;
-};
-
-// A block of the flattened model.
-struct Node {
-  std::string path;
-  const Block* block;
-  std::string interrupt;  // the interrupt task it runs in, if inside a triggered subsystem
-  std::vector<Input> inputs;
-  std::vector<std::string> outputs;
-  Rate rate;
-};
-
-class Flattener {
- public:
-  std::vector<Node> nodes;
-  std::map<std::string, std::string> aliases;  // a subsystem's port signal -> the signal it stands for
-
-  void scope(const std::vector<Block>& blocks, const std::string& prefix, const std::string& interrupt) {
-    for (const Block& block : blocks) {
-      const std::string path = prefix + block.name;
-      if (block.type == "Subsystem") {
-        const std::string inner = path + "/";
-        const std::string task = block.trigger.kind == Trigger::Kind::interrupt ? block.trigger.interrupt : interrupt;
-        for (const Connection& input : block.inputs) aliases[inner + input.port] = prefix + input.signal;
-        for (const Connection& output : block.outputs) aliases[prefix + output.signal] = inner + output.port;
-        scope(block.blocks, inner, task);
-        continue;
-      }
-      Node node{path, &block, interrupt, {}, {}, {}};
-      for (const Connection& input : block.inputs) node.inputs.push_back({prefix + input.signal, input.location});
-      for (const Connection& output : block.outputs) node.outputs.push_back(prefix + output.signal);
-      nodes.push_back(std::move(node));
+// The nodes of one task, in an order where each block's direct-feedthrough inputs are computed before it; ties in
+// model order. A cycle (an algebraic loop, which validation reports) leaves its blocks in model order at the end.
+std::vector<std::string> execution_order(const FlatModel& flat, const std::vector<std::size_t>& members,
+                                         const std::map<std::string, std::size_t>& driver_of) {
+  std::map<std::size_t, std::vector<std::size_t>> next;
+  std::map<std::size_t, int> waiting;  // inputs from the same task not computed yet
+  for (const std::size_t member : members) waiting[member] = 0;
+  for (const std::size_t reader : members) {
+    const BlockType* type = find_block_type(flat.nodes[reader].block->type);
+    if (type != nullptr && !type->direct_feedthrough) continue;
+    for (const Input& input : flat.nodes[reader].inputs) {
+      const auto driver = driver_of.find(input.signal);
+      if (driver == driver_of.end() || waiting.count(driver->second) == 0 || driver->second == reader) continue;
+      next[driver->second].push_back(reader);
+      ++waiting[reader];
     }
   }
-
-  [[nodiscard]] std::string resolve(std::string signal) const {
-    for (std::size_t step = 0; step < aliases.size() + 1; ++step) {  // bounded: aliases cannot cycle forever
-      const auto found = aliases.find(signal);
-      if (found == aliases.end()) return signal;
-      signal = found->second;
-    }
-    return signal;
+  std::set<std::size_t> ready;
+  for (const auto& [member, count] : waiting) {
+    if (count == 0) ready.insert(member);
   }
-};
+  std::vector<std::string> order;
+  std::set<std::size_t> placed;
+  while (!ready.empty()) {
+    const std::size_t node = *ready.begin();  // the earliest in the model
+    ready.erase(ready.begin());
+    order.push_back(flat.nodes[node].path);
+    placed.insert(node);
+    for (const std::size_t reader : next[node]) {
+      if (--waiting[reader] == 0) ready.insert(reader);
+    }
+  }
+  for (const std::size_t member : members) {
+    if (placed.count(member) == 0) order.push_back(flat.nodes[member].path);
+  }
+  return order;
+}
 
 Rate declared(const Node& node) {
   if (!node.interrupt.empty()) return {Rate::Kind::interrupt, 0, node.interrupt};
@@ -82,15 +75,10 @@ std::string describe(const Rate& rate, double base_period_us) {
 }
 
 RateAnalysis analyse_rates(const Model& model) {
-  Flattener flat;
-  flat.scope(model.blocks, "", "");
+  FlatModel flat{model};
   std::map<std::string, std::size_t> driver_of;  // resolved signal -> node
   for (std::size_t i = 0; i < flat.nodes.size(); ++i) {
-    for (std::string& output : flat.nodes[i].outputs) {
-      output = flat.resolve(output);
-      driver_of.emplace(output, i);
-    }
-    for (Input& input : flat.nodes[i].inputs) input.signal = flat.resolve(input.signal);
+    for (const std::string& output : flat.nodes[i].outputs) driver_of.emplace(output, i);
     flat.nodes[i].rate = declared(flat.nodes[i]);
   }
   const auto rate_of_driver = [&](const Input& input) -> Rate {
@@ -188,6 +176,18 @@ RateAnalysis analyse_rates(const Model& model) {
     }
   };
   interrupts(interrupts, model.blocks);
+  for (Task& task : result.tasks) {
+    std::vector<std::size_t> members;
+    for (std::size_t i = 0; i < flat.nodes.size(); ++i) {
+      if (flat.nodes[i].rate == task.rate) members.push_back(i);
+    }
+    task.blocks = execution_order(flat, members, driver_of);
+  }
+  std::vector<std::size_t> constants;
+  for (std::size_t i = 0; i < flat.nodes.size(); ++i) {
+    if (flat.nodes[i].rate.kind == Rate::Kind::constant) constants.push_back(i);
+  }
+  result.constant_blocks = execution_order(flat, constants, driver_of);
   return result;
 }
 

@@ -49,19 +49,38 @@ blocks:
   EXPECT_EQ(rates.tasks[2].priority, 5);
   EXPECT_EQ(rates.tasks[3].name, "USART1");
   EXPECT_FALSE(rates.tasks[3].priority);  // auto: duet sched assigns it
+  EXPECT_EQ(rates.tasks[0].blocks, (std::vector<std::string>{"count", "double_it"}));
+  EXPECT_EQ(rates.tasks[1].blocks, (std::vector<std::string>{"to_slow", "add"}));
+  EXPECT_EQ(rates.tasks[2].blocks, (std::vector<std::string>{"to_isr", "isr/pin"}));
+  EXPECT_EQ(rates.constant_blocks, std::vector<std::string>{"offset"});
+}
+
+// The rates of a model made of `blocks` (YAML list items), with the base period `base_period_us`.
+RateAnalysis rates_of(const std::string& blocks, int base_period_us = 100) {
+  const auto model = parse_model(
+      "duet_model: 1\nname: m\nbase_period_us: " + std::to_string(base_period_us) + "\nblocks:\n" + blocks, "m.yaml");
+  EXPECT_TRUE(model.ok()) << model.error();
+  return model.ok() ? analyse_rates(model.value()) : RateAnalysis{};
+}
+
+TEST(Rates, ExecutionOrderFollowsTheSignalsNotTheFile) {
+  const RateAnalysis rates = rates_of(R"(
+  - {name: out, type: GpioOut, parameters: {pin: PA5}, inputs: {u: limited}}
+  - {name: limit, type: Saturation, parameters: {lower: 0, upper: 1}, inputs: {u: scaled}, outputs: {y: limited}}
+  - {name: scale, type: Gain, parameters: {k: 2}, inputs: {u: previous}, outputs: {y: scaled}}
+  - {name: memory, type: UnitDelay, inputs: {u: limited}, outputs: {y: previous}}
+)");
+  ASSERT_EQ(rates.tasks.size(), 1U);
+  // The delay's output is its state: it goes first; then what depends on it, in the order of the signals.
+  EXPECT_EQ(rates.tasks[0].blocks, (std::vector<std::string>{"memory", "scale", "limit", "out"}));
 }
 
 TEST(Rates, AnInheritedLoopRunsAtTheBaseRate) {
-  const auto model = parse_model(R"(duet_model: 1
-name: loop
-base_period_us: 50
-blocks:
+  const RateAnalysis rates = rates_of(R"(
   - {name: toggle, type: Not, inputs: {u: old}, outputs: {y: state}}
   - {name: delay, type: UnitDelay, inputs: {u: state}, outputs: {y: old}}
 )",
-                                 "m.yaml");
-  ASSERT_TRUE(model.ok()) << model.error();
-  const RateAnalysis rates = analyse_rates(model.value());
+                                      50);
   EXPECT_TRUE(rates.diagnostics.empty());
   EXPECT_EQ(rates.block_rates.at("toggle"), (Rate{Rate::Kind::periodic, 1, {}}));
   ASSERT_EQ(rates.tasks.size(), 1U);

@@ -1,0 +1,73 @@
+#pragma once
+// For the model's passes (private to src/model): the model flattened into blocks with resolved signal names. A
+// subsystem's ports stand for the parent's signals; blocks inside a triggered subsystem belong to its interrupt task.
+
+#include <cstddef>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "duet/model/model.hpp"
+#include "duet/model/rates.hpp"
+
+namespace duet::model {
+
+struct Input {
+  std::string signal;  // global name, resolved
+  Location location;
+};
+
+// A block of the flattened model.
+struct Node {
+  std::string path;
+  const Block* block;
+  std::string interrupt;  // the interrupt task it runs in, if inside a triggered subsystem
+  std::vector<Input> inputs;
+  std::vector<std::string> outputs;
+  Rate rate;
+};
+
+class FlatModel {
+ public:
+  explicit FlatModel(const Model& model) {
+    scope(model.blocks, "", "");
+    for (Node& node : nodes) {
+      for (std::string& output : node.outputs) output = resolve(output);
+      for (Input& input : node.inputs) input.signal = resolve(input.signal);
+    }
+  }
+
+  std::vector<Node> nodes;
+
+ private:
+  void scope(const std::vector<Block>& blocks, const std::string& prefix, const std::string& interrupt) {
+    for (const Block& block : blocks) {
+      const std::string path = prefix + block.name;
+      if (block.type == "Subsystem") {
+        const std::string inner = path + "/";
+        const std::string task = block.trigger.kind == Trigger::Kind::interrupt ? block.trigger.interrupt : interrupt;
+        for (const Connection& input : block.inputs) aliases_[inner + input.port] = prefix + input.signal;
+        for (const Connection& output : block.outputs) aliases_[prefix + output.signal] = inner + output.port;
+        scope(block.blocks, inner, task);
+        continue;
+      }
+      Node node{path, &block, interrupt, {}, {}, {}};
+      for (const Connection& input : block.inputs) node.inputs.push_back({prefix + input.signal, input.location});
+      for (const Connection& output : block.outputs) node.outputs.push_back(prefix + output.signal);
+      nodes.push_back(std::move(node));
+    }
+  }
+
+  [[nodiscard]] std::string resolve(std::string signal) const {
+    for (std::size_t step = 0; step < aliases_.size() + 1; ++step) {  // bounded: aliases cannot cycle forever
+      const auto found = aliases_.find(signal);
+      if (found == aliases_.end()) return signal;
+      signal = found->second;
+    }
+    return signal;
+  }
+
+  std::map<std::string, std::string> aliases_;  // a subsystem's port signal -> the signal it stands for
+};
+
+}  // namespace duet::model
