@@ -47,3 +47,16 @@ TEST_F(ModelCommand, CheckNamesEveryProblemAndFails) {
 
 }  // namespace
 }  // namespace duet::cli
+
+namespace duet::cli {
+namespace {
+
+TEST(ModelExamples, TheStepTimeModelChecks) {
+  const Outcome outcome = run({"model", "check", std::string{DUET_SOURCE_DIR} + "/apps/step_time/step_time.yaml"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  EXPECT_EQ(outcome.out, "step_time: 3 blocks, 1 tasks\n  rate 1: every 100 us: previous, toggle, led\n");
+}
+
+}  // namespace
+}  // namespace duet::cli
