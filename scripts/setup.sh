@@ -19,6 +19,8 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev clang-format clang-tidy
   # the bridge's benchmark compares with socat
   socat
+  # duet model render draws block diagrams with Graphviz
+  graphviz
   # fuzzing (libFuzzer comes with clang's runtime libraries)
   clang libclang-rt-14-dev
 )

@@ -1,5 +1,5 @@
 #pragma once
-// `duet model`: check a model file and show its tasks (docs/MODELS.md).
+// `duet model`: check a model file and show its tasks; draw its block diagram (docs/MODELS.md).
 
 #include "subcommand.hpp"
 

@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "run_for_test.hpp"
 
@@ -56,6 +57,29 @@ TEST(ModelExamples, TheStepTimeModelChecks) {
   EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
   EXPECT_EQ(outcome.err, "");
   EXPECT_EQ(outcome.out, "step_time: 3 blocks, 1 tasks\n  rate 1: every 100 us: previous, toggle, led\n");
+}
+
+}  // namespace
+}  // namespace duet::cli
+
+namespace duet::cli {
+namespace {
+
+TEST(ModelExamples, TheStepTimeModelRendersAsSvg) {
+  const std::string svg =
+      (std::filesystem::temp_directory_path() / ("duet_render_" + std::to_string(::getpid()) + ".svg")).string();
+  const Outcome outcome =
+      run({"model", "render", std::string{DUET_SOURCE_DIR} + "/apps/step_time/step_time.yaml", "-o", svg});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  std::ifstream picture{svg};
+  std::ostringstream text;
+  text << picture.rdbuf();
+  EXPECT_NE(text.str().find("<svg"), std::string::npos);
+  EXPECT_NE(text.str().find("toggle"), std::string::npos);
+  std::filesystem::remove(svg);
+  const Outcome dot =
+      run({"model", "render", std::string{DUET_SOURCE_DIR} + "/apps/step_time/step_time.yaml", "--dot"});
+  EXPECT_NE(dot.out.find("\"previous\":\"y\" -> \"toggle\":\"u\""), std::string::npos) << dot.out;
 }
 
 }  // namespace
