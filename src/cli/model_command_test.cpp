@@ -84,3 +84,32 @@ TEST(ModelExamples, TheStepTimeModelRendersAsSvg) {
 
 }  // namespace
 }  // namespace duet::cli
+
+namespace duet::cli {
+namespace {
+
+TEST(ModelCommandCode, ACodeBlockWithItsHeaderBesideTheModel) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("duet_model_code_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::ofstream{folder / "motor_logic.hpp"} << "// declared for the test\n";
+  std::ofstream{folder / "robot.yaml"}
+      << "duet_model: 1\nname: robot\nbase_period_us: 100\nblocks:\n"
+         "  - name: logic\n    type: Code\n    function: motor_logic\n    file: motor_logic.hpp\n"
+         "    direct_feedthrough: false\n"
+         "    inputs: {theta: {signal: tilt, type: boolean}}\n"
+         "    outputs: {stop: {signal: stop, type: boolean}}\n"
+         "    state: {last: {type: single, initial: 0}}\n"
+         "    parameters: {limit: {value: 60, type: single}}\n"
+         "  - {name: angle, type: GpioIn, parameters: {pin: PA0}, outputs: {y: tilt}}\n"
+         "  - {name: led, type: GpioOut, parameters: {pin: PB0}, inputs: {u: stop}}\n";
+  const Outcome outcome = run({"model", "check", (folder / "robot.yaml").string()});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  // Without direct feedthrough the code's output comes from its state: it runs first, as written, before the block
+  // that drives its input (with feedthrough it would wait for 'angle').
+  EXPECT_EQ(outcome.out, "robot: 3 blocks, 1 tasks\n  rate 1: every 100 us: logic, angle, led\n");
+  std::filesystem::remove_all(folder);
+}
+
+}  // namespace
+}  // namespace duet::cli

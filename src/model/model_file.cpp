@@ -164,15 +164,62 @@ Period period(const YAML::Node& block, double base_period_us) {
   return result;
 }
 
-std::vector<Connection> connections(const YAML::Node& node, const std::string& what) {
+// Port: signal, or for a Code block port: {signal: NAME, type: TYPE, size: N}.
+std::vector<Connection> connections(const YAML::Node& node, const std::string& what, bool typed) {
   std::vector<Connection> result;
   if (!node) return result;
   map_of(node, what);
   for (const auto& entry : node) {
-    result.push_back(
-        {identifier(entry.first, "a port"), identifier(entry.second, "a signal"), location_of(entry.first)});
+    Connection connection{identifier(entry.first, "a port"), {}, location_of(entry.first), std::nullopt, {}};
+    if (!typed) {
+      connection.signal = identifier(entry.second, "a signal");
+    } else {
+      if (!entry.second.IsMap()) {
+        fail(entry.second, "a Code block's port names its signal and its type", "{signal: NAME, type: TYPE}");
+      }
+      only(entry.second, "port " + connection.port, {"signal", "type", "size"});
+      if (!entry.second["signal"]) fail(entry.second, "port " + connection.port + " needs 'signal'");
+      if (!entry.second["type"]) fail(entry.second, "port " + connection.port + " needs 'type'");
+      connection.signal = identifier(entry.second["signal"], "a signal");
+      connection.type = data_type(entry.second["type"]);
+      if (entry.second["size"]) connection.shape = shape(entry.second["size"]);
+    }
+    result.push_back(std::move(connection));
   }
   return result;
+}
+
+UserCode user_code(const YAML::Node& node, const std::string& name) {
+  UserCode code;
+  if (!node["function"]) fail(node, "Code block '" + name + "' needs 'function'", "the C++ function it calls");
+  code.function = identifier(node["function"], "a function");
+  if (!node["file"] || !node["file"].IsScalar() || node["file"].Scalar().empty()) {
+    fail(node, "Code block '" + name + "' needs 'file'", "the header that declares the function, beside the model");
+  }
+  code.file = node["file"].Scalar();
+  code.file_location = location_of(node["file"]);
+  if (const YAML::Node feedthrough = node["direct_feedthrough"]) {
+    if (!YAML::convert<bool>::decode(feedthrough, code.direct_feedthrough)) {
+      fail(feedthrough, "direct_feedthrough is true or false");
+    }
+  }
+  if (const YAML::Node state = node["state"]) {
+    map_of(state, "state");
+    for (const auto& entry : state) {
+      StateVariable variable;
+      variable.name = identifier(entry.first, "a state variable");
+      variable.location = location_of(entry.first);
+      map_of(entry.second, "state " + variable.name);
+      only(entry.second, "state " + variable.name, {"type", "size", "initial"});
+      if (!entry.second["type"]) fail(entry.second, "state " + variable.name + " needs 'type'");
+      variable.type = data_type(entry.second["type"]);
+      if (entry.second["size"]) variable.shape = shape(entry.second["size"]);
+      variable.initial =
+          entry.second["initial"] ? literal(entry.second["initial"], "state " + variable.name) : Value{{0.0}, {}};
+      code.state.push_back(std::move(variable));
+    }
+  }
+  return code;
 }
 
 Trigger trigger(const YAML::Node& node) {
@@ -216,9 +263,19 @@ Block block(const YAML::Node& node, double base_period_us) {
   if (!node["type"].IsScalar()) fail(node["type"], "a block type must be a name");
   result.type = node["type"].Scalar();
   result.type_location = location_of(node["type"]);
+  const bool is_code = result.type == "Code";
   only(node, "block '" + result.name + "'",
        {"name", "type", "period", "period_us", "parameters", "inputs", "outputs", "blocks", "trigger", "enable",
-        "description"});
+        "description", "function", "file", "state", "direct_feedthrough"});
+  if (!is_code) {
+    for (const char* field : {"function", "file", "state", "direct_feedthrough"}) {
+      if (node[field])
+        fail(node[field], "'" + std::string{field} + "' belongs to Code blocks",
+             "block '" + result.name + "' is a " + result.type);
+    }
+  } else {
+    result.code = user_code(node, result.name);
+  }
   result.period = period(node, base_period_us);
   if (const YAML::Node parameters = node["parameters"]) {
     map_of(parameters, "parameters");
@@ -226,8 +283,14 @@ Block block(const YAML::Node& node, double base_period_us) {
       BlockParameter parameter;
       parameter.location = location_of(entry.second);
       const std::string name = identifier(entry.first, "a parameter");
-      if (entry.second.IsScalar() && is_identifier(entry.second.Scalar()) && entry.second.Scalar() != "true" &&
-          entry.second.Scalar() != "false") {
+      if (is_code && entry.second.IsMap()) {  // {value: V, type: T}
+        only(entry.second, "parameter " + name, {"value", "type"});
+        if (!entry.second["value"]) fail(entry.second, "parameter " + name + " needs 'value'");
+        parameter.literal = literal(entry.second["value"], "parameter " + name);
+        parameter.text = entry.second["value"].IsScalar() ? entry.second["value"].Scalar() : "(list)";
+        if (entry.second["type"]) parameter.type = data_type(entry.second["type"]);
+      } else if (entry.second.IsScalar() && is_identifier(entry.second.Scalar()) && entry.second.Scalar() != "true" &&
+                 entry.second.Scalar() != "false") {
         parameter.reference = entry.second.Scalar();
         parameter.text = parameter.reference;
       } else {
@@ -237,8 +300,8 @@ Block block(const YAML::Node& node, double base_period_us) {
       result.parameters.emplace_back(name, parameter);
     }
   }
-  result.inputs = connections(node["inputs"], "inputs");
-  result.outputs = connections(node["outputs"], "outputs");
+  result.inputs = connections(node["inputs"], "inputs", is_code);
+  result.outputs = connections(node["outputs"], "outputs", is_code);
   if (const YAML::Node blocks = node["blocks"]) {
     if (!blocks.IsSequence()) fail(blocks, "blocks must be a list");
     for (const auto& inner : blocks) result.blocks.push_back(block(inner, base_period_us));

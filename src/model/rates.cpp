@@ -18,8 +18,10 @@ std::vector<std::string> execution_order(const FlatModel& flat, const std::vecto
   std::map<std::size_t, int> waiting;  // inputs from the same task not computed yet
   for (const std::size_t member : members) waiting[member] = 0;
   for (const std::size_t reader : members) {
-    const BlockType* type = find_block_type(flat.nodes[reader].block->type);
-    if (type != nullptr && !type->direct_feedthrough) continue;
+    const Block& block = *flat.nodes[reader].block;
+    const BlockType* type = find_block_type(block.type);
+    const bool feedthrough = block.code ? block.code->direct_feedthrough : type == nullptr || type->direct_feedthrough;
+    if (!feedthrough) continue;
     for (const Input& input : flat.nodes[reader].inputs) {
       const auto driver = driver_of.find(input.signal);
       if (driver == driver_of.end() || waiting.count(driver->second) == 0 || driver->second == reader) continue;

@@ -1,6 +1,7 @@
 #include "duet/model/validate.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 #include <set>
 #include <string>
@@ -86,7 +87,8 @@ class Validator {
               hint_for(block.type, known, "docs/MODELS.md lists the block types"));
         continue;
       }
-      feedthrough[block.name] = type->direct_feedthrough;
+      feedthrough[block.name] = block.code ? block.code->direct_feedthrough : type->direct_feedthrough;
+      if (block.code) check_code_file(block);
       if (!type->user_defined_ports) check_ports_and_parameters(block, *type);
       if (block.type == "Subsystem") {
         const bool inner = check_scope(block.blocks, block.inputs, block.outputs, block.location);
@@ -137,6 +139,18 @@ class Validator {
     (void)where;
     // Whether any of the subsystem's outputs depends on its inputs within a step.
     return depends_on_inputs(blocks, drivers, readers, feedthrough, inputs, outputs);
+  }
+
+  // The header of a Code block must be beside the model, where generation and simulation will include it from.
+  void check_code_file(const Block& block) {
+    const std::filesystem::path directory = std::filesystem::path{model_.file}.parent_path();
+    const std::filesystem::path header = directory / block.code->file;
+    if (!std::filesystem::is_regular_file(header)) {
+      error(block.code->file_location,
+            "file '" + block.code->file + "' of Code block '" + block.name + "' is not there",
+            "the path is relative to the model file's folder" +
+                std::string{directory.empty() ? std::string{} : " (" + directory.string() + ")"});
+    }
   }
 
   // A parameter whose value is a word: a reference, except where the block takes a word (a pin, a timer, ...).

@@ -144,3 +144,34 @@ TEST(Validate, ADelayInsideASubsystemBreaksALoopThroughIt) {
 
 }  // namespace
 }  // namespace duet::model
+
+namespace duet::model {
+namespace {
+
+const Case code_cases[] = {
+    {"code_without_function", "", "  - {name: logic, type: Code, file: logic.hpp}\n",
+     "(does not read: m.yaml:5:5: error: Code block 'logic' needs 'function' (the C++ function it calls))"},
+    {"code_without_file", "", "  - {name: logic, type: Code, function: motor_logic}\n",
+     "(does not read: m.yaml:5:5: error: Code block 'logic' needs 'file' (the header that declares the function, "
+     "beside the model))"},
+    {"code_untyped_port", "", "  - {name: logic, type: Code, function: f, file: f.hpp, inputs: {u: x}}\n",
+     "(does not read: m.yaml:5:69: error: a Code block's port names its signal and its type ({signal: NAME, type: "
+     "TYPE}))"},
+    {"code_port_without_type", "",
+     "  - {name: logic, type: Code, function: f, file: f.hpp, inputs: {u: {signal: x}}}\n",
+     "(does not read: m.yaml:5:69: error: port u needs 'type')"},
+    {"function_on_a_gain", "", "  - {name: g, type: Gain, function: f}\n",
+     "(does not read: m.yaml:5:37: error: 'function' belongs to Code blocks (block 'g' is a Gain))"},
+    {"code_state_without_type", "",
+     "  - {name: logic, type: Code, function: f, file: f.hpp, state: {last: {initial: 0}}}\n",
+     "(does not read: m.yaml:5:71: error: state last needs 'type')"},
+    {"code_file_missing", "", "  - {name: logic, type: Code, function: f, file: no_such_header.hpp}\n",
+     "m.yaml:5:50: error: file 'no_such_header.hpp' of Code block 'logic' is not there (the path is relative to the "
+     "model file's folder)\n"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Code, Invalid, ::testing::ValuesIn(code_cases),
+                         [](const auto& test) { return std::string{test.param.name}; });
+
+}  // namespace
+}  // namespace duet::model

@@ -54,15 +54,36 @@ struct SignalDeclaration {
 struct BlockParameter {
   std::optional<Value> literal;
   std::string reference;
-  std::string text;  // as written, for messages (also a word like a pin name)
+  std::string text;              // as written, for messages (also a word like a pin name)
+  std::optional<DataType> type;  // a Code block's parameters declare theirs
   Location location;
 };
 
-// Port -> signal name.
+// Port -> signal name; a Code block's ports also declare their type and size.
 struct Connection {
   std::string port;
   std::string signal;
   Location location;
+  std::optional<DataType> type;
+  std::vector<std::size_t> shape;
+};
+
+// A Code block's function: void function(const Inputs&, Outputs&, State&, const Parameters&), in a freestanding
+// header beside the model.
+struct StateVariable {
+  std::string name;
+  DataType type = DataType::float64;
+  std::vector<std::size_t> shape;
+  Value initial;
+  Location location;
+};
+
+struct UserCode {
+  std::string function;
+  std::string file;  // relative to the model file
+  Location file_location;
+  std::vector<StateVariable> state;
+  bool direct_feedthrough = true;  // outputs depend on inputs within the step
 };
 
 struct Period {
@@ -91,7 +112,8 @@ struct Block {
   std::vector<Connection> outputs;
   std::vector<Block> blocks;  // a Subsystem's
   Trigger trigger;
-  std::string enable;  // a Subsystem's enabling signal
+  std::string enable;            // a Subsystem's enabling signal
+  std::optional<UserCode> code;  // a Code block's
 };
 
 struct Model {
