@@ -64,9 +64,9 @@ TEST(CommandLine, NoSubcommandIsAUsageError) {
 }
 
 TEST(CommandLine, PlannedSubcommandSaysSoAndFails) {
-  const Outcome outcome = run({"sim"});
+  const Outcome outcome = run({"monitor"});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
-  EXPECT_EQ(outcome.err, "duet sim: not implemented yet (planned in issue #7)\n");
+  EXPECT_EQ(outcome.err, "duet monitor: not implemented yet (planned in issue #10)\n");
 }
 
 }  // namespace

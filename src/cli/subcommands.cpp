@@ -2,8 +2,10 @@
 
 #include <ostream>
 
+#include "gen_command.hpp"
 #include "model_command.hpp"
 #include "sched_command.hpp"
+#include "sim_command.hpp"
 #include "subcommand.hpp"
 #include "xcp_command.hpp"
 
@@ -21,8 +23,8 @@ Action planned(CLI::App& command) {
 
 constexpr Subcommand table[] = {
     {"xcp", "Talk XCP to a target: connect, read and write memory, record signals with DAQ", define_xcp_command},
-    {"sim", "Simulate a model against a plant model on the PC", planned<7>},
-    {"gen", "Generate freestanding C++, the A2L file and the task table from a model", planned<7>},
+    {"sim", "Simulate a model against a plant model on the PC", define_sim_command},
+    {"gen", "Generate freestanding C++, the A2L file and the task table from a model", define_gen_command},
     {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", define_sched_command},
     {"monitor", "Serve the dashboard for a target reached over XCP", planned<10>},
     {"model", "Check a model file and describe its blocks, signals and tasks", define_model_command},

@@ -7,7 +7,7 @@ namespace {
 
 // Sources have no inputs; delays and integrators' outputs come from their state (no direct feedthrough).
 const std::vector<BlockType> table{
-    {"Constant", {}, {"y"}, {{"value"}}},
+    {"Constant", {}, {"y"}, {{"value"}, {"type", false}}},
     {"Gain", {"u"}, {"y"}, {{"k"}}},
     {"Sum", {}, {"y"}, {{"signs", false}}, true, true},
     {"Product", {}, {"y"}, {}, true, true},
@@ -23,7 +23,7 @@ const std::vector<BlockType> table{
     {"Demux", {"u"}, {"y1", "y2", "y3", "y4"}, {}},
     {"Selector", {"u", "index"}, {"y"}, {}},
     {"Lookup", {"index"}, {"y"}, {{"table"}}},
-    {"Counter", {}, {"y"}, {{"limit"}, {"initial", false}}, false},
+    {"Counter", {}, {"y"}, {{"limit"}, {"initial", false}, {"type", false}}, false},
     {"UnitDelay", {"u"}, {"y"}, {{"initial", false}}, false},
     {"DiscreteIntegrator",
      {"u"},
@@ -36,7 +36,7 @@ const std::vector<BlockType> table{
      {"y"},
      {{"p"}, {"i", false}, {"d", false}, {"n", false}, {"lower", false}, {"upper", false}}},
     {"MatrixMultiply", {"a", "b"}, {"y"}, {}},
-    {"RateTransition", {"u"}, {"y"}, {{"mode", false}}, false},
+    {"RateTransition", {"u"}, {"y"}, {{"mode", false}, {"initial", false}}, false},
     {"Outport", {"u"}, {}, {}},
     // Hardware: each port implements them (docs/MODELS.md).
     {"GpioIn", {}, {"y"}, {{"pin"}}},
@@ -56,6 +56,12 @@ const std::vector<BlockType> table{
 }  // namespace
 
 std::span<const BlockType> block_types() { return table; }
+
+bool is_word_parameter(std::string_view parameter) {
+  constexpr std::string_view words[] = {"pin",      "timer", "spi",  "adc",  "line",
+                                       "channel", "operator", "mode", "type", "signs"};
+  return std::find(std::begin(words), std::end(words), parameter) != std::end(words);
+}
 
 const BlockType* find_block_type(std::string_view name) {
   const auto found =

@@ -25,22 +25,25 @@ struct Node {
   std::vector<Input> inputs;
   std::vector<std::string> outputs;
   Rate rate;
+  std::vector<std::string> enables;  // boolean signals of enclosing enabled subsystems: it runs while all are true
 };
 
 class FlatModel {
  public:
   explicit FlatModel(const Model& model) {
-    scope(model.blocks, "", "");
+    scope(model.blocks, "", "", {});
     for (Node& node : nodes) {
       for (std::string& output : node.outputs) output = resolve(output);
       for (Input& input : node.inputs) input.signal = resolve(input.signal);
+      for (std::string& enable : node.enables) enable = resolve(enable);
     }
   }
 
   std::vector<Node> nodes;
 
  private:
-  void scope(const std::vector<Block>& blocks, const std::string& prefix, const std::string& interrupt) {
+  void scope(const std::vector<Block>& blocks, const std::string& prefix, const std::string& interrupt,
+             const std::vector<std::string>& enables) {
     for (const Block& block : blocks) {
       const std::string path = prefix + block.name;
       if (block.type == "Subsystem") {
@@ -48,10 +51,12 @@ class FlatModel {
         const std::string task = block.trigger.kind == Trigger::Kind::interrupt ? block.trigger.interrupt : interrupt;
         for (const Connection& input : block.inputs) aliases_[inner + input.port] = prefix + input.signal;
         for (const Connection& output : block.outputs) aliases_[prefix + output.signal] = inner + output.port;
-        scope(block.blocks, inner, task);
+        std::vector<std::string> inner_enables = enables;
+        if (!block.enable.empty()) inner_enables.push_back(prefix + block.enable);
+        scope(block.blocks, inner, task, inner_enables);
         continue;
       }
-      Node node{path, &block, interrupt, {}, {}, {}};
+      Node node{path, &block, interrupt, {}, {}, {}, enables};
       for (const Connection& input : block.inputs) node.inputs.push_back({prefix + input.signal, input.location});
       for (const Connection& output : block.outputs) node.outputs.push_back(prefix + output.signal);
       nodes.push_back(std::move(node));

@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include "duet/model/block_types.hpp"
+#include "duet/model/data_type.hpp"
 #include "duet/support/text_file.hpp"
 
 namespace duet::model {
@@ -102,6 +104,15 @@ DataType data_type(const YAML::Node& node) {
          "double, single, int8, int16, int32, uint8, uint16, uint32 or boolean");
   }
   return found->second;
+}
+
+// A value of the given size: a scalar fills it (a table of 4096 zeros is `value: 0, size: 4096`); a list must have it.
+Value sized(const Value& value, const std::vector<std::size_t>& size, const YAML::Node& where) {
+  std::size_t count = 1;
+  for (const std::size_t dimension : size) count *= dimension;
+  if (value.shape.empty()) return {std::vector<double>(count, value.elements.front()), size};
+  if (value.shape != size) fail(where, "the size does not match the value's", "give a single value to fill it");
+  return value;
 }
 
 std::vector<std::size_t> shape(const YAML::Node& node) {
@@ -289,6 +300,8 @@ Block block(const YAML::Node& node, double base_period_us) {
         parameter.literal = literal(entry.second["value"], "parameter " + name);
         parameter.text = entry.second["value"].IsScalar() ? entry.second["value"].Scalar() : "(list)";
         if (entry.second["type"]) parameter.type = data_type(entry.second["type"]);
+      } else if (entry.second.IsScalar() && is_word_parameter(name)) {  // a pin, an operator, ...: kept as written
+        parameter.text = entry.second.Scalar();
       } else if (entry.second.IsScalar() && is_identifier(entry.second.Scalar()) && entry.second.Scalar() != "true" &&
                  entry.second.Scalar() != "false") {
         parameter.reference = entry.second.Scalar();
@@ -356,10 +369,11 @@ Model model(const YAML::Node& root, const std::string& file) {
       if (!entry.second.IsMap()) {
         parameter.value = literal(entry.second, "parameter " + parameter.name);
       } else {
-        only(fields, "parameter " + parameter.name, {"value", "type", "unit", "min", "max", "description"});
+        only(fields, "parameter " + parameter.name, {"value", "type", "size", "unit", "min", "max", "description"});
         if (!fields["value"]) fail(entry.second, "parameter " + parameter.name + " needs 'value'");
         parameter.value = literal(fields["value"], "parameter " + parameter.name);
         if (fields["type"]) parameter.type = data_type(fields["type"]);
+        if (fields["size"]) parameter.value = sized(parameter.value, shape(fields["size"]), fields["size"]);
         if (fields["unit"]) parameter.unit = fields["unit"].Scalar();
         if (fields["min"]) parameter.minimum = number(fields["min"], "min");
         if (fields["max"]) parameter.maximum = number(fields["max"], "max");
@@ -368,6 +382,10 @@ Model model(const YAML::Node& root, const std::string& file) {
           fail(fields["min"], "parameter " + parameter.name + ": min is above max");
         }
         for (double element : parameter.value.elements) {
+          if (!fits(element, parameter.type)) {
+            fail(fields["value"], "parameter " + parameter.name + ": " + format_number(element) + " is not a value of " +
+                                      "its type " + std::string{type_name(parameter.type)});
+          }
           if ((parameter.minimum && element < *parameter.minimum) ||
               (parameter.maximum && element > *parameter.maximum)) {
             fail(fields["value"], "parameter " + parameter.name + ": the value is outside [min, max]");

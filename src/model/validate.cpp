@@ -98,7 +98,7 @@ class Validator {
         if (parameter.reference.empty()) continue;
         used_.insert(parameter.reference);
         if (std::find(names_.begin(), names_.end(), parameter.reference) == names_.end() &&
-            expects_reference(block.type, name)) {
+            !is_word_parameter(name)) {
           error(parameter.location,
                 "parameter '" + name + "' of block '" + block.name + "' names '" + parameter.reference +
                     "', which is neither a parameter nor a constant of the model",
@@ -151,13 +151,6 @@ class Validator {
             "the path is relative to the model file's folder" +
                 std::string{directory.empty() ? std::string{} : " (" + directory.string() + ")"});
     }
-  }
-
-  // A parameter whose value is a word: a reference, except where the block takes a word (a pin, a timer, ...).
-  static bool expects_reference(const std::string& type, const std::string& parameter) {
-    static const std::set<std::string> words{"pin",     "timer",    "spi",  "adc", "line",
-                                             "channel", "operator", "mode", "type"};
-    return words.count(parameter) == 0 || type == "Constant" || type == "Gain";
   }
 
   void check_ports_and_parameters(const Block& block, const BlockType& type) {

@@ -29,6 +29,8 @@ struct BlockType {
 };
 
 [[nodiscard]] std::span<const BlockType> block_types();
+// Parameters whose value is a word rather than a number or a reference: a pin, a timer, an operator, a data type.
+[[nodiscard]] bool is_word_parameter(std::string_view parameter);
 [[nodiscard]] const BlockType* find_block_type(std::string_view name);
 
 }  // namespace duet::model

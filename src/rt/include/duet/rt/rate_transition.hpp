@@ -25,6 +25,8 @@ class FastToSlow {
   }
   // In the slow task.
   [[nodiscard]] const T& read() const { return held_; }
+  // What the slow task reads until the first release. Before the tasks run.
+  void reset(const T& initial) { held_ = initial; }
 
  private:
   T held_{};
@@ -42,6 +44,11 @@ class SlowToFast {
   [[nodiscard]] const T& read(bool slow_release_tick) {
     if (slow_release_tick) held_ = produced_;
     return held_;
+  }
+  // What the fast task reads until the slow task's first value arrives. Before the tasks run.
+  void reset(const T& initial) {
+    produced_ = initial;
+    held_ = initial;
   }
 
  private:
@@ -71,6 +78,14 @@ class AsyncTransfer {
       reader_slot_ = static_cast<std::uint8_t>(exchange_.exchange(reader_slot_, std::memory_order_acq_rel) & slot_mask);
     }
     return slots_[reader_slot_];
+  }
+
+  // What the reader gets until the first write. Before the tasks run (not interrupt-safe).
+  void reset(const T& initial) {
+    slots_.fill(initial);
+    writer_slot_ = 0;
+    reader_slot_ = 1;
+    exchange_.store(2, std::memory_order_relaxed);
   }
 
  private:

@@ -1,0 +1,43 @@
+#pragma once
+// The hardware interface generated code calls (docs/MODELS.md, "Hardware blocks"), on the PC: every resource goes to
+// the plant the simulation connected, by name ("gpio:LED0", "pwm:TIM1/1", ...), as the interpreter's hardware
+// blocks do, so that generated code and `duet sim` see the same plant. Each port has a header of this name; CMake
+// chooses which one a build sees.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace duet::plant {
+class Plant;
+}
+
+namespace duet::hardware {
+
+struct Pin {
+  std::string_view name;
+};
+constexpr Pin pin(std::string_view name) { return {name}; }
+
+// The lock-step port raises interrupt tasks by their place in the task table, not by an interrupt number.
+constexpr std::uint16_t interrupt_number(std::string_view) { return 0; }
+
+// The plant the hardware calls reach (none: writes are dropped, reads give 0). Not thread-safe: set it before the
+// model runs.
+void connect(plant::Plant* plant);
+
+void write(std::string_view resource, std::span<const double> values);
+void read(std::string_view resource, std::span<double> values);
+
+inline void gpio_write(Pin pin, bool level) {
+  const double value = level ? 1.0 : 0.0;
+  write("gpio:" + std::string{pin.name}, {&value, 1});
+}
+inline bool gpio_read(Pin pin) {
+  double value = 0;
+  read("gpio:" + std::string{pin.name}, {&value, 1});
+  return value != 0.0;
+}
+
+}  // namespace duet::hardware

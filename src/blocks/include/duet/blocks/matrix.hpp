@@ -1,0 +1,29 @@
+#pragma once
+// Matrix product (Simulink's Product block in matrix mode). Pure; interrupt-safe as long as no other task writes
+// the operands or the result meanwhile.
+
+#include <cstddef>
+
+#include "duet/blocks/arithmetic.hpp"
+#include "duet/blocks/element.hpp"
+
+namespace duet::blocks {
+
+// y = a * b for row-major a (rows x inner), b (inner x columns) and y (rows x columns):
+//   y[r * columns + c] = sum over k = 0, 1, ..., inner - 1 of a[r * inner + k] * b[k * columns + c]
+// accumulated from T{0} in increasing k as acc = add(acc, multiply(a[...], b[...])); this order is the result's
+// rounding, so it is part of the contract. inner == 0 gives a zero matrix.
+// Preconditions: the arrays hold at least those many elements, and y overlaps neither a nor b (y is written while a
+// and b are still being read).
+template <Number T>
+constexpr void matrix_multiply(const T* a, const T* b, T* y, std::size_t rows, std::size_t inner, std::size_t columns) {
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < columns; ++c) {
+      T acc{0};
+      for (std::size_t k = 0; k < inner; ++k) acc = add(acc, multiply(a[r * inner + k], b[k * columns + c]));
+      y[r * columns + c] = acc;
+    }
+  }
+}
+
+}  // namespace duet::blocks

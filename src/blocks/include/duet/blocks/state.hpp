@@ -1,0 +1,148 @@
+#pragma once
+// Blocks with state (Simulink's discrete blocks), as plain aggregates: generated code puts them in its state struct,
+// XCP reads their public members, and they start from aggregate initialisation, e.g. UnitDelay<float>{0.5F}.
+//
+// Each step of a model calls output() for every block first and update() afterwards, with the same inputs, so an
+// output never sees its own step's update. Every formula is written below in the exact order it is evaluated, with the
+// arithmetic of arithmetic.hpp; tests pin that order, because another order rounds differently and simulation and
+// firmware would drift apart. period_s is the block's sample time in seconds. Not interrupt-safe: one task owns a
+// block.
+
+#include <cstdint>
+#include <type_traits>
+
+#include "duet/blocks/arithmetic.hpp"
+#include "duet/blocks/element.hpp"
+#include "duet/blocks/nonlinear.hpp"
+
+namespace duet::blocks {
+
+// y(k) = x(k); x(k+1) = u(k).
+template <Element T>
+struct UnitDelay {
+  T state;
+
+  [[nodiscard]] constexpr T output() const { return state; }
+  constexpr void update(T u) { state = u; }
+};
+
+// Forward Euler, y(k) = x(k) (Simulink's Discrete-Time Integrator, forward Euler, with limits on the state):
+//   x(k+1) = saturate(add(x(k), multiply(multiply(gain, period_s), u)), lower, upper)
+template <Floating T>
+struct DiscreteIntegrator {
+  T state;
+
+  [[nodiscard]] constexpr T output() const { return state; }
+  constexpr void update(T u, T gain, T period_s, T lower, T upper) {
+    state = saturate(add(state, multiply(multiply(gain, period_s), u)), lower, upper);
+  }
+};
+
+// Backward difference (Simulink's Discrete Derivative):
+//   y(k) = divide(multiply(gain, subtract(u(k), u(k-1))), period_s)
+// previous starts as the first input's expected value; with 0 the first output is a jump from 0.
+template <Floating T>
+struct DiscreteDerivative {
+  T previous;
+
+  [[nodiscard]] constexpr T output(T u, T gain, T period_s) const {
+    return divide(multiply(gain, subtract(u, previous)), period_s);
+  }
+  constexpr void update(T u) { previous = u; }
+};
+
+// Parallel PID gains: proportional, integral, derivative, derivative filter coefficient N (1/s) and the output limits.
+template <Floating T>
+struct PidGains {
+  T p;
+  T i;
+  T d;
+  T n;
+  T lower;
+  T upper;
+};
+
+// Simulink's parallel discrete PID with forward Euler for both the integrator and the derivative filter:
+//   P + I * Ts / (z - 1) + D * N / (1 + N * Ts / (z - 1))
+// with the output limited but no anti-windup (the integrator keeps integrating while the output saturates):
+//   derivative = multiply(n, subtract(multiply(d, error), filter))
+//   y          = saturate(add(add(multiply(p, error), integrator), derivative), lower, upper)
+//   filter     = add(filter, multiply(period_s, derivative))
+//   integrator = add(integrator, multiply(multiply(i, period_s), error))
+// update() needs the gains and error that output() saw in the same step; it recomputes the derivative from them.
+template <Floating T>
+struct DiscretePid {
+  T integrator;
+  T filter;
+
+  [[nodiscard]] constexpr T output(T error, const PidGains<T>& gains) const {
+    return saturate(add(add(multiply(gains.p, error), integrator), derivative(error, gains)), gains.lower, gains.upper);
+  }
+
+  constexpr void update(T error, const PidGains<T>& gains, T period_s) {
+    const T filter_input = derivative(error, gains);  // before filter changes: the same value output() used
+    filter = add(filter, multiply(period_s, filter_input));
+    integrator = add(integrator, multiply(multiply(gains.i, period_s), error));
+  }
+
+ private:
+  [[nodiscard]] constexpr T derivative(T error, const PidGains<T>& gains) const {
+    return multiply(gains.n, subtract(multiply(gains.d, error), filter));
+  }
+};
+
+// Counts 0, 1, ..., limit, 0, 1, ... (Simulink's Counter Limited): y(k) = c(k);
+//   c(k+1) = c(k) >= limit ? 0 : add(c(k), 1)
+// A count above the limit (after the limit was lowered) restarts at 0 too.
+template <Number T>
+struct Counter {
+  T count;
+
+  [[nodiscard]] constexpr T output() const { return count; }
+  constexpr void update(T limit) { count = count >= limit ? T{0} : add(count, T{1}); }
+};
+
+enum class Edge : std::uint8_t { rising, falling, either };
+
+// Detects edges of u from one call to the next (Simulink's Detect Rise Positive and Detect Fall Nonpositive):
+//   rising   previous <= 0 and u > 0   (bool: false, then true)
+//   falling  previous > 0 and u <= 0   (bool: true, then false)
+//   either   rising or falling
+// and then remembers u. A NaN is neither <= 0 nor > 0, so no edge leads to or from it. previous starts as the value
+// before the first step; 0 (false) means a first input above 0 (true) is a rising edge.
+template <Element T>
+struct EdgeDetector {
+  T previous;
+
+  constexpr bool detect(Edge edge, T u) {
+    const bool was_high = is_high(previous);
+    const bool was_low = is_low(previous);
+    previous = u;
+    const bool rising = was_low && is_high(u);
+    const bool falling = was_high && is_low(u);
+    switch (edge) {
+      case Edge::rising: return rising;
+      case Edge::falling: return falling;
+      case Edge::either: return rising || falling;
+    }
+    return false;  // not an enumerator: unreachable for a valid Edge
+  }
+
+ private:
+  static constexpr bool is_high(T value) {
+    if constexpr (std::is_same_v<T, bool>) {
+      return value;
+    } else {
+      return value > T{0};
+    }
+  }
+  static constexpr bool is_low(T value) {
+    if constexpr (std::is_same_v<T, bool>) {
+      return !value;
+    } else {
+      return value <= T{0};
+    }
+  }
+};
+
+}  // namespace duet::blocks

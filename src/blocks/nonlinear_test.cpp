@@ -1,0 +1,71 @@
+#include "duet/blocks/nonlinear.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace duet::blocks {
+namespace {
+
+static_assert(saturate(12, 0, 10) == 10);
+static_assert(absolute<std::int8_t>(-128) == 127);
+static_assert(absolute(-0.0) == 0.0);
+static_assert(select(false, 1.0F, 2.0F) == 2.0F);
+
+TEST(BlocksSaturate, LimitsToTheBoundsAndPassesEverythingBetween) {
+  EXPECT_EQ(saturate(11.0, -1.0, 10.0), 10.0);
+  EXPECT_EQ(saturate(10.0, -1.0, 10.0), 10.0);
+  EXPECT_EQ(saturate(9.5, -1.0, 10.0), 9.5);
+  EXPECT_EQ(saturate(-1.0, -1.0, 10.0), -1.0);
+  EXPECT_EQ(saturate(-1.5, -1.0, 10.0), -1.0);
+  EXPECT_EQ(saturate(std::numeric_limits<float>::infinity(), -1.0F, 1.0F), 1.0F);
+  EXPECT_EQ(saturate(-std::numeric_limits<float>::infinity(), -1.0F, 1.0F), -1.0F);
+  EXPECT_EQ(saturate<std::int8_t>(-128, -100, 100), -100);
+  EXPECT_EQ(saturate<std::uint16_t>(65535, 10, 1000), 1000);
+  EXPECT_EQ(saturate<std::uint16_t>(3, 10, 1000), 10);
+}
+
+TEST(BlocksSaturate, NanPassesThrough) {
+  EXPECT_TRUE(std::isnan(saturate(std::numeric_limits<double>::quiet_NaN(), -1.0, 1.0)));
+}
+
+TEST(BlocksSaturate, WithCrossedLimitsUpperIsCheckedFirst) {
+  EXPECT_EQ(saturate(5, 10, 0), 0);    // above upper
+  EXPECT_EQ(saturate(-5, 10, 0), 10);  // not above upper, below lower
+}
+
+TEST(BlocksAbsolute, IntegersAndTheMostNegativeValue) {
+  EXPECT_EQ(absolute<std::int8_t>(-5), 5);
+  EXPECT_EQ(absolute<std::int8_t>(5), 5);
+  EXPECT_EQ(absolute<std::int8_t>(-128), 127);
+  EXPECT_EQ(absolute<std::int8_t>(-127), 127);
+  EXPECT_EQ(absolute<std::int16_t>(-32768), 32767);
+  EXPECT_EQ(absolute(std::numeric_limits<std::int32_t>::min()), std::numeric_limits<std::int32_t>::max());
+  EXPECT_EQ(absolute(-2147483647), 2147483647);
+  EXPECT_EQ(absolute<std::uint8_t>(200), 200);
+  EXPECT_EQ(absolute<std::uint32_t>(4000000000U), 4000000000U);
+}
+
+TEST(BlocksAbsolute, FloatingPointClearsTheSign) {
+  EXPECT_EQ(absolute(-2.5), 2.5);
+  EXPECT_EQ(absolute(2.5F), 2.5F);
+  EXPECT_FALSE(std::signbit(absolute(-0.0)));
+  EXPECT_FALSE(std::signbit(absolute(-0.0F)));
+  EXPECT_EQ(absolute(-std::numeric_limits<float>::infinity()), std::numeric_limits<float>::infinity());
+  EXPECT_EQ(absolute(-std::numeric_limits<double>::denorm_min()), std::numeric_limits<double>::denorm_min());
+  const double nan_abs = absolute(-std::numeric_limits<double>::quiet_NaN());
+  EXPECT_TRUE(std::isnan(nan_abs));
+  EXPECT_FALSE(std::signbit(nan_abs));
+}
+
+TEST(BlocksSelect, ChoosesOnOrOff) {
+  EXPECT_EQ(select(true, 1.5, -1.5), 1.5);
+  EXPECT_EQ(select(false, 1.5, -1.5), -1.5);
+  EXPECT_EQ(select<std::int8_t>(true, -128, 127), -128);
+  EXPECT_TRUE(select(false, false, true));
+}
+
+}  // namespace
+}  // namespace duet::blocks

@@ -1,0 +1,74 @@
+#include "gen_command.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "duet/model/generate.hpp"
+#include "duet/model/model_file.hpp"
+#include "duet/model/program.hpp"
+
+namespace duet::cli {
+namespace {
+
+struct GenOptions {
+  std::string file;
+  std::string output = ".";
+};
+
+ExitCode run_gen(const GenOptions& options, Streams streams) {
+  auto model = model::load_model(options.file);
+  if (!model) {
+    streams.err << model.error() << '\n';
+    return ExitCode::failure;
+  }
+  const model::ProgramBuild build = model::build_program(model.value());
+  for (const model::Diagnostic& diagnostic : build.diagnostics) {
+    streams.err << model::format(options.file, diagnostic) << '\n';
+  }
+  if (!build.program) return ExitCode::failure;
+  auto files = model::generate(*build.program, std::filesystem::path{options.file}.filename().string());
+  if (!files) {
+    streams.err << "duet gen: " << options.file << ": " << files.error() << '\n';
+    return ExitCode::failure;
+  }
+  std::error_code error;
+  std::filesystem::create_directories(options.output, error);
+  if (error) {
+    streams.err << "duet gen: cannot create " << options.output << ": " << error.message() << '\n';
+    return ExitCode::failure;
+  }
+  for (const model::GeneratedFile& file : files.value()) {
+    const std::filesystem::path path = std::filesystem::path{options.output} / file.name;
+    // Unchanged files keep their time stamps, so that builds do not redo them.
+    std::ifstream existing{path, std::ios::binary};
+    const std::string old{std::istreambuf_iterator<char>{existing}, std::istreambuf_iterator<char>{}};
+    if (existing.is_open() && old == file.text) continue;
+    std::ofstream out{path, std::ios::binary};
+    out << file.text;
+    if (!out) {
+      streams.err << "duet gen: cannot write " << path.string() << '\n';
+      return ExitCode::failure;
+    }
+  }
+  streams.out << "generated " << model.value().name << " into " << options.output << ":";
+  for (const model::GeneratedFile& file : files.value()) streams.out << ' ' << file.name;
+  streams.out << '\n';
+  return ExitCode::success;
+}
+
+}  // namespace
+
+Action define_gen_command(CLI::App& command) {
+  auto options = std::make_shared<GenOptions>();
+  command.add_option("model", options->file, "The model file (docs/MODELS.md)")->required();
+  command.add_option("-o,--output", options->output, "The folder to write into (created if missing)")
+      ->capture_default_str();
+  return [options](Streams streams) { return run_gen(*options, streams); };
+}
+
+}  // namespace duet::cli

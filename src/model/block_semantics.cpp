@@ -1,0 +1,80 @@
+#include "block_semantics.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <utility>
+
+namespace duet::model {
+
+std::string sum_signs(const ProgramBlock& block) {
+  const Argument* signs = block.argument("signs");
+  std::string text = signs == nullptr ? std::string{} : signs->text;
+  text.erase(std::remove(text.begin(), text.end(), '|'), text.end());  // Simulink writes "|+-"
+  text.resize(std::max(text.size(), block.inputs.size()), '+');
+  return text;
+}
+
+MatrixSizes matrix_sizes(const Program& program, const ProgramBlock& block) {
+  const SignalType& a = program.signals[block.inputs.at(0)].type;
+  const SignalType& b = program.signals[block.inputs.at(1)].type;
+  MatrixSizes sizes;
+  sizes.rows = a.shape.empty() ? 1 : a.shape[0];
+  sizes.inner = a.shape.size() == 2 ? a.shape[1] : 1;
+  sizes.columns = b.shape.size() == 2 ? b.shape[1] : 1;
+  return sizes;
+}
+
+std::size_t demux_element(const std::string& port) { return std::stoul(port.substr(1)) - 1; }
+
+std::optional<blocks::CompareOperator> parse_compare_operator(std::string_view text) {
+  using blocks::CompareOperator;
+  constexpr std::array<std::pair<std::string_view, CompareOperator>, 6> names{{{"<", CompareOperator::less},
+                                                                              {"<=", CompareOperator::less_equal},
+                                                                              {"==", CompareOperator::equal},
+                                                                              {"!=", CompareOperator::not_equal},
+                                                                              {">=", CompareOperator::greater_equal},
+                                                                              {">", CompareOperator::greater}}};
+  for (const auto& [name, op] : names) {
+    if (name == text) return op;
+  }
+  return std::nullopt;
+}
+
+std::optional<blocks::LogicOperator> parse_logic_operator(std::string_view text) {
+  using blocks::LogicOperator;
+  constexpr std::array<std::pair<std::string_view, LogicOperator>, 5> names{{{"AND", LogicOperator::logical_and},
+                                                                             {"OR", LogicOperator::logical_or},
+                                                                             {"XOR", LogicOperator::logical_xor},
+                                                                             {"NAND", LogicOperator::logical_nand},
+                                                                             {"NOR", LogicOperator::logical_nor}}};
+  for (const auto& [name, op] : names) {
+    if (name == text) return op;
+  }
+  return std::nullopt;
+}
+
+blocks::CompareOperator compare_operator(const ProgramBlock& block) {
+  const Argument* op = block.argument("operator");
+  return parse_compare_operator(op == nullptr ? "" : op->text).value_or(blocks::CompareOperator::equal);
+}
+
+blocks::LogicOperator logic_operator(const ProgramBlock& block) {
+  const Argument* op = block.argument("operator");
+  return parse_logic_operator(op == nullptr ? "" : op->text).value_or(blocks::LogicOperator::logical_and);
+}
+
+Transfer transfer_of(const Program& program, const ProgramBlock& block) {
+  const std::size_t writer = block.update_task;
+  const std::size_t reader = block.task;
+  if (writer == at_initialisation || reader == at_initialisation) return {Transfer::Kind::latest, 1};
+  const Rate& from = program.tasks[writer].rate;
+  const Rate& to = program.tasks[reader].rate;
+  if (from.kind != Rate::Kind::periodic || to.kind != Rate::Kind::periodic) return {Transfer::Kind::latest, 1};
+  if (from.multiple < to.multiple) {
+    return {Transfer::Kind::fast_to_slow, static_cast<std::uint32_t>(to.multiple / from.multiple)};
+  }
+  return {Transfer::Kind::slow_to_fast, static_cast<std::uint32_t>(from.multiple / to.multiple)};
+}
+
+}  // namespace duet::model

@@ -1,0 +1,46 @@
+#pragma once
+// For the model's passes (private to src/model): what simulation and generation must read alike from a block's
+// parameters — operators, signs, sizes, how a rate transition hands over its value.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "duet/blocks/logic.hpp"
+#include "duet/model/program.hpp"
+
+namespace duet::model {
+
+// Simulink's default derivative filter coefficient of a PID, 1/s.
+inline constexpr double pid_default_filter = 100.0;
+
+// A Sum's signs, one per input ("+-" subtracts u2 from u1); all '+' unless given.
+[[nodiscard]] std::string sum_signs(const ProgramBlock& block);
+
+struct MatrixSizes {
+  std::size_t rows = 1;
+  std::size_t inner = 1;
+  std::size_t columns = 1;
+};
+[[nodiscard]] MatrixSizes matrix_sizes(const Program& program, const ProgramBlock& block);
+
+// The element of a Demux's input that output `port` (y1, y2, ...) carries.
+[[nodiscard]] std::size_t demux_element(const std::string& port);
+
+[[nodiscard]] std::optional<blocks::CompareOperator> parse_compare_operator(std::string_view text);
+[[nodiscard]] std::optional<blocks::LogicOperator> parse_logic_operator(std::string_view text);
+// Of a validated block (check_types refuses unknown operators).
+[[nodiscard]] blocks::CompareOperator compare_operator(const ProgramBlock& block);
+[[nodiscard]] blocks::LogicOperator logic_operator(const ProgramBlock& block);
+
+// How a RateTransition hands its value from the writer's task to the reader's (duet/rt/rate_transition.hpp):
+// between periodic rates deterministically at the slower rate's releases, which come every `ratio` activations of
+// the faster task; with an interrupt task on either side, the latest value.
+struct Transfer {
+  enum class Kind : std::uint8_t { fast_to_slow, slow_to_fast, latest } kind = Kind::latest;
+  std::uint32_t ratio = 1;
+};
+[[nodiscard]] Transfer transfer_of(const Program& program, const ProgramBlock& block);
+
+}  // namespace duet::model

@@ -1,0 +1,479 @@
+#include "generator.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <set>
+
+#include "block_semantics.hpp"
+#include "duet/blocks/convert.hpp"
+#include "duet/model/data_type.hpp"
+#include "duet/model/interpreter.hpp"
+#include "typed.hpp"
+
+namespace duet::model {
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+std::string shortest(auto value) {
+  char text[48];
+  const auto written = std::to_chars(std::begin(text), std::end(text), value);
+  std::string result{std::begin(text), written.ptr};
+  if (result.find_first_of(".e") == std::string::npos) result += ".0";
+  return result;
+}
+
+std::string type_of(DataType type) { return std::string{cpp_type(type)}; }
+
+// Statements over the elements of a signal: once with index 0 for a scalar, in a loop otherwise.
+std::string for_each(std::size_t count, const std::string& body_with_i) {
+  if (count == 1) {
+    std::string body = body_with_i;
+    for (std::size_t at = body.find("[i]"); at != std::string::npos; at = body.find("[i]", at)) body.replace(at, 3, "[0]");
+    return "  " + body + "\n";
+  }
+  return "  for (std::size_t i = 0; i < " + std::to_string(count) + "; ++i) " + body_with_i + "\n";
+}
+
+std::string compare_name(blocks::CompareOperator op) {
+  constexpr const char* names[] = {"less", "less_equal", "equal", "not_equal", "greater_equal", "greater"};
+  return std::string{"duet::blocks::CompareOperator::"} + names[static_cast<int>(op)];
+}
+
+std::string logic_name(blocks::LogicOperator op) {
+  constexpr const char* names[] = {"logical_and", "logical_or", "logical_xor", "logical_nand", "logical_nor"};
+  return std::string{"duet::blocks::LogicOperator::"} + names[static_cast<int>(op)];
+}
+
+bool has_state(const std::string& type) {
+  return type == "UnitDelay" || type == "Counter" || type == "DiscreteIntegrator" || type == "DiscreteDerivative" ||
+         type == "DiscretePid" || type == "RateTransition";
+}
+
+}  // namespace
+
+std::vector<Field> lay_out(std::vector<Field> fields, std::size_t& size) {
+  std::size_t end = 0;
+  std::size_t alignment = 1;
+  for (Field& field : fields) {
+    const std::size_t align = size_of(field.type);
+    alignment = std::max(alignment, align);
+    end = (end + align - 1) / align * align;
+    field.offset = end;
+    end += align * field.count;
+  }
+  size = fields.empty() ? 1 : (end + alignment - 1) / alignment * alignment;  // C++: an empty struct takes a byte
+  return fields;
+}
+
+std::string literal(DataType type, double value) {
+  return with_type(type, [value, type](auto tag) -> std::string {
+    using T = decltype(tag);
+    const T converted = blocks::convert<T>(value);
+    if constexpr (std::is_same_v<T, bool>) {
+      return converted ? "true" : "false";
+    } else if constexpr (std::is_floating_point_v<T>) {
+      const std::string suffix = std::is_same_v<T, float> ? "F" : "";
+      const std::string limits = "std::numeric_limits<" + type_of(std::is_same_v<T, float> ? DataType::float32
+                                                                                             : DataType::float64) +
+                                 ">::infinity()";
+      if (std::isinf(converted)) return converted < 0 ? "-" + limits : limits;
+      return shortest(converted) + suffix;
+    } else {
+      return type_of(type) + "{" + std::to_string(static_cast<long long>(converted)) + "}";
+    }
+  });
+}
+
+Generator::Generator(const Program& program) : program_(program), member_(program.signals.size(), false) {
+  for (std::size_t index = 0; index < program.signals.size(); ++index) {
+    const ProgramSignal& signal = program.signals[index];
+    const ProgramBlock& driver = program.blocks[signal.driver];
+    bool member = signal.measurable || driver.task == at_initialisation || !driver.enables.empty();
+    for (const ProgramBlock& block : program.blocks) {
+      const bool reads = std::find(block.inputs.begin(), block.inputs.end(), index) != block.inputs.end();
+      const bool enabled_by = std::find(block.enables.begin(), block.enables.end(), index) != block.enables.end();
+      if ((reads && (block.task != driver.task || block.update_task != driver.task)) ||
+          (enabled_by && block.task != driver.task)) {
+        member = true;
+      }
+    }
+    member_[index] = member && !signal.parameter;
+  }
+}
+
+std::vector<Field> Generator::signal_fields() const {
+  std::vector<Field> fields;
+  for (std::size_t index = 0; index < program_.signals.size(); ++index) {
+    if (!member_[index]) continue;
+    const ProgramSignal& signal = program_.signals[index];
+    fields.push_back({signal.identifier, signal.type.type, signal.type.elements(), 0});
+  }
+  return fields;
+}
+
+std::vector<Field> Generator::parameter_fields() const {
+  std::vector<Field> fields;
+  for (const Parameter& parameter : program_.model->parameters) {
+    fields.push_back({parameter.name, parameter.type, parameter.value.elements.size(), 0});
+  }
+  return fields;
+}
+
+std::string Generator::storage(std::size_t signal) const {
+  const ProgramSignal& info = program_.signals[signal];
+  if (info.parameter) return "p." + program_.model->parameters[*info.parameter].name;
+  return (member_[signal] ? "signals." : "") + info.identifier;
+}
+
+std::string Generator::element(std::size_t signal, const std::string& index) const {
+  return storage(signal) + (program_.signals[signal].type.elements() > 1 ? "[" + index + "]" : "");
+}
+
+std::string Generator::element(std::size_t signal, std::size_t index) const {
+  return element(signal, std::to_string(index));
+}
+
+std::string Generator::pointer(std::size_t signal) const {
+  return program_.signals[signal].type.elements() > 1 ? storage(signal) : "&" + storage(signal);
+}
+
+std::string Generator::argument(const ProgramBlock& block, const std::string& name, double fallback, DataType type,
+                                const std::string& index) const {
+  const Argument* given = block.argument(name);
+  if (given != nullptr && given->kind == Argument::Kind::parameter) {
+    const Parameter& parameter = program_.parameter(*given);
+    return "p." + parameter.name + (parameter.value.elements.size() > 1 ? "[" + index + "]" : "");
+  }
+  if (given != nullptr && given->value.elements.size() > 1) return block.identifier + "_" + name + "[" + index + "]";
+  return literal(type, given != nullptr && !given->value.elements.empty() ? given->value.elements[0] : fallback);
+}
+
+std::string Generator::state(const ProgramBlock& block, const std::string& index) const {
+  const std::size_t count = block.outputs.empty() ? 1 : program_.signals[block.outputs[0]].type.elements();
+  return "state." + block.identifier + (count > 1 && block.type() != "RateTransition" ? "[" + index + "]" : "");
+}
+
+std::string Generator::state_members() const {
+  std::string text;
+  for (const ProgramBlock& block : program_.blocks) {
+    if (!has_state(block.type()) || block.outputs.empty()) continue;
+    const SignalType& type = program_.signals[block.outputs[0]].type;
+    const std::string element_type = type_of(type.type);
+    const std::string count = type.elements() > 1 ? "[" + std::to_string(type.elements()) + "]" : "";
+    if (block.type() == "RateTransition") {
+      const Transfer transfer = transfer_of(program_, block);
+      const std::string value =
+          type.elements() > 1 ? "std::array<" + element_type + ", " + std::to_string(type.elements()) + ">" : element_type;
+      const char* kind = transfer.kind == Transfer::Kind::fast_to_slow   ? "FastToSlow"
+                         : transfer.kind == Transfer::Kind::slow_to_fast ? "SlowToFast"
+                                                                         : "AsyncTransfer";
+      text += "  duet::rt::" + std::string{kind} + "<" + value + "> " + block.identifier + ";\n";
+      if (transfer.kind != Transfer::Kind::latest) text += "  std::uint32_t " + block.identifier + "_countdown;\n";
+      continue;
+    }
+    text += "  duet::blocks::" + block.type() + "<" + element_type + "> " + block.identifier + count + ";\n";
+  }
+  return text;
+}
+
+std::string Generator::state_resets() const {
+  std::string text;
+  for (const ProgramBlock& block : program_.blocks) {
+    if (!has_state(block.type()) || block.outputs.empty()) continue;
+    const SignalType& type = program_.signals[block.outputs[0]].type;
+    const std::size_t n = type.elements();
+    const std::string& kind = block.type();
+    if (kind == "RateTransition") {
+      std::string initial;
+      for (std::size_t i = 0; i < n; ++i) {
+        initial += (i == 0 ? "" : ", ") + argument(block, "initial", 0, type.type, std::to_string(i));
+      }
+      text += "  state." + block.identifier + ".reset(" + (n > 1 ? "{" + initial + "}" : initial) + ");\n";
+      if (transfer_of(program_, block).kind != Transfer::Kind::latest) {
+        text += "  state." + block.identifier + "_countdown = 0;\n";
+      }
+    } else if (kind == "UnitDelay" || kind == "DiscreteIntegrator") {
+      text += for_each(n, state(block, "i") + ".state = " + argument(block, "initial", 0, type.type, "i") + ";");
+    } else if (kind == "Counter") {
+      text += for_each(n, state(block, "i") + ".count = " + argument(block, "initial", 0, type.type, "i") + ";");
+    } else if (kind == "DiscreteDerivative") {
+      text += for_each(n, state(block, "i") + ".previous = " + literal(type.type, 0) + ";");
+    } else if (kind == "DiscretePid") {
+      text += for_each(n, state(block, "i") + " = {" + literal(type.type, 0) + ", " + literal(type.type, 0) + "};");
+    }
+  }
+  return text;
+}
+
+std::string Generator::block_constants() const {
+  std::string text;
+  for (const ProgramBlock& block : program_.blocks) {
+    if (block.type() == "GpioIn" || block.type() == "GpioOut") {
+      text += "constexpr duet::hardware::Pin " + block.identifier + "_pin = duet::hardware::pin(\"" +
+              block.argument("pin")->text + "\");\n";
+    }
+    for (const auto& [name, argument] : block.arguments) {
+      if (argument.kind != Argument::Kind::literal || argument.value.elements.size() < 2) continue;
+      const DataType type = block.type() == "Compare" ? program_.signals[block.inputs[0]].type.type
+                            : block.type() == "Lookup" || block.outputs.empty()
+                                ? DataType::float64
+                                : program_.signals[block.outputs[0]].type.type;
+      text += "constexpr " + type_of(type) + " " + block.identifier + "_" + name + "[] = {";
+      for (std::size_t i = 0; i < argument.value.elements.size(); ++i) {
+        text += (i == 0 ? "" : ", ") + literal(type, argument.value.elements[i]);
+      }
+      text += "};\n";
+    }
+  }
+  return text;
+}
+
+std::string Generator::declare_outputs(const ProgramBlock& block) const {
+  std::string text;
+  for (const std::size_t signal : block.outputs) {
+    if (member_[signal] || program_.signals[signal].parameter) continue;
+    const SignalType& type = program_.signals[signal].type;
+    text += "  " + type_of(type.type) + " " + program_.signals[signal].identifier +
+            (type.elements() > 1 ? "[" + std::to_string(type.elements()) + "]" : "") + "{};\n";
+  }
+  return text;
+}
+
+std::string Generator::guarded(const ProgramBlock& block, std::string statements) const {
+  if (block.enables.empty() || statements.empty()) return statements;
+  std::string condition;
+  for (const std::size_t signal : block.enables) {
+    condition += (condition.empty() ? "" : " && ") + std::string{"duet::blocks::convert<bool>("} + element(signal, "0") + ")";
+  }
+  std::string indented;
+  for (std::size_t start = 0; start < statements.size();) {
+    const std::size_t end = statements.find('\n', start);
+    indented += "  " + statements.substr(start, end - start + 1);
+    start = end + 1;
+  }
+  return "  if (" + condition + ") {\n" + indented + "  }\n";
+}
+
+std::string Generator::output_phase(std::size_t index) const {
+  const ProgramBlock& block = program_.blocks[index];
+  const std::string statements = output_statements(block);
+  std::string text = declare_outputs(block) + guarded(block, statements);
+  return text.empty() ? text : "  // " + block.path + " (" + block.type() + ")\n" + text;
+}
+
+std::string Generator::update_phase(std::size_t index) const {
+  const ProgramBlock& block = program_.blocks[index];
+  return guarded(block, update_statements(block));
+}
+
+std::string Generator::output_statements(const ProgramBlock& block) const {
+  const std::string& type = block.type();
+  if (type == "Outport" || block.outputs.empty()) return hardware_output(block);
+  if (type == "RateTransition") return rate_transition_output(block);
+  if (!hardware_resource(block).empty()) return hardware_output(block);
+  const std::size_t y = block.outputs[0];
+  const SignalType& out = program_.signals[y].type;
+  const std::size_t n = out.elements();
+  const DataType t = out.type;
+  const auto in = [&](std::size_t k, const std::string& index) { return element(block.inputs[k], index); };
+  const auto assign = [&](const std::string& value) { return for_each(n, element(y, "i") + " = " + value + ";"); };
+  if (type == "Constant") {
+    if (program_.signals[y].parameter) return {};
+    return assign(argument(block, "value", 0, t, "i"));
+  }
+  if (type == "Gain") return assign("duet::blocks::gain(" + in(0, "i") + ", " + argument(block, "k", 1, t, "i") + ")");
+  if (type == "Sum" || type == "Product") {
+    const std::string signs = sum_signs(block);
+    std::string value = type == "Sum" && signs[0] == '-' ? "duet::blocks::negate(" + in(0, "i") + ")" : in(0, "i");
+    for (std::size_t k = 1; k < block.inputs.size(); ++k) {
+      const char* operation = type == "Product" ? "multiply" : signs[k] == '-' ? "subtract" : "add";
+      value = "duet::blocks::" + std::string{operation} + "(" + value + ", " + in(k, "i") + ")";
+    }
+    return assign(value);
+  }
+  if (type == "Saturation") {
+    return assign("duet::blocks::saturate(" + in(0, "i") + ", " + argument(block, "lower", -infinity, t, "i") + ", " +
+                  argument(block, "upper", infinity, t, "i") + ")");
+  }
+  if (type == "Abs") return assign("duet::blocks::absolute(" + in(0, "i") + ")");
+  if (type == "Atan2") return assign("duet::blocks::atan2(" + in(0, "i") + ", " + in(1, "i") + ")");
+  if (type == "Not") return assign("!duet::blocks::convert<bool>(" + in(0, "i") + ")");
+  if (type == "Convert") return assign("duet::blocks::convert<" + type_of(t) + ">(" + in(0, "i") + ")");
+  if (type == "Compare") {
+    const DataType compared = program_.signals[block.inputs[0]].type.type;
+    return assign("duet::blocks::compare(" + compare_name(compare_operator(block)) + ", " + in(0, "i") + ", " +
+                  argument(block, "value", 0, compared, "i") + ")");
+  }
+  if (type == "Logic") {
+    std::string inputs;
+    for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+      inputs += (k == 0 ? "" : ", ") + std::string{"duet::blocks::convert<bool>("} + in(k, "i") + ")";
+    }
+    return assign("duet::blocks::logic<" + logic_name(logic_operator(block)) + ">(" + inputs + ")");
+  }
+  if (type == "Switch") {
+    return assign("duet::blocks::select(duet::blocks::convert<bool>(" + in(1, "i") + "), " + in(0, "i") + ", " +
+                  in(2, "i") + ")");
+  }
+  if (type == "Mux") {
+    std::string text;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+      const std::size_t count = program_.signals[block.inputs[k]].type.elements();
+      for (std::size_t i = 0; i < count; ++i) text += "  " + element(y, at++) + " = " + element(block.inputs[k], i) + ";\n";
+    }
+    return text;
+  }
+  if (type == "Demux") {
+    std::string text;
+    for (std::size_t k = 0; k < block.outputs.size(); ++k) {
+      text += "  " + element(block.outputs[k], "0") + " = " +
+              element(block.inputs[0], demux_element(block.output_ports[k])) + ";\n";
+    }
+    return text;
+  }
+  if (type == "Selector") {
+    const std::size_t count = program_.signals[block.inputs[0]].type.elements();
+    return assign("duet::blocks::element_at(std::span<const " + type_of(t) + ">{" + pointer(block.inputs[0]) + ", " +
+                  std::to_string(count) + "}, " + in(1, "0") + ")");
+  }
+  if (type == "Lookup") {
+    const Argument* table = block.argument("table");
+    const std::size_t count = table->value.elements.size();
+    std::string data = table->kind == Argument::Kind::parameter
+                           ? (count > 1 ? "p." + program_.parameter(*table).name : "&p." + program_.parameter(*table).name)
+                           : block.identifier + "_table";
+    if (table->kind != Argument::Kind::parameter && count == 1) data = "&" + literal(t, table->value.elements[0]);
+    return assign("duet::blocks::element_at(std::span<const " + type_of(t) + ">{" + data + ", " +
+                  std::to_string(count) + "}, " + in(0, "0") + ")");
+  }
+  if (type == "MatrixMultiply") {
+    const MatrixSizes sizes = matrix_sizes(program_, block);
+    return "  duet::blocks::matrix_multiply(" + pointer(block.inputs[0]) + ", " + pointer(block.inputs[1]) + ", " +
+           pointer(y) + ", " + std::to_string(sizes.rows) + ", " + std::to_string(sizes.inner) + ", " +
+           std::to_string(sizes.columns) + ");\n";
+  }
+  if (type == "UnitDelay" || type == "Counter" || type == "DiscreteIntegrator") {
+    return assign(state(block, "i") + ".output()");
+  }
+  const std::string period = literal(t, block.period_s);
+  if (type == "DiscreteDerivative") {
+    return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
+                  period + ")");
+  }
+  if (type == "DiscretePid") {
+    return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
+                  argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
+                  argument(block, "n", pid_default_filter, t, "i") + ", " + argument(block, "lower", -infinity, t, "i") +
+                  ", " + argument(block, "upper", infinity, t, "i") + "})");
+  }
+  return "  #error \"duet gen: block type " + type + " is not generated yet\"\n";
+}
+
+std::string Generator::update_statements(const ProgramBlock& block) const {
+  const std::string& type = block.type();
+  if (type == "RateTransition") return rate_transition_update(block);
+  if (block.outputs.empty() || !has_state(type)) return {};
+  const SignalType& out = program_.signals[block.outputs[0]].type;
+  const std::size_t n = out.elements();
+  const DataType t = out.type;
+  const std::string period = literal(t, block.period_s);
+  const auto in = [&](const std::string& index) { return element(block.inputs.at(0), index); };
+  if (type == "UnitDelay") return for_each(n, state(block, "i") + ".update(" + in("i") + ");");
+  if (type == "Counter") return for_each(n, state(block, "i") + ".update(" + argument(block, "limit", 0, t, "i") + ");");
+  if (type == "DiscreteIntegrator") {
+    return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
+                           period + ", " + argument(block, "lower", -infinity, t, "i") + ", " +
+                           argument(block, "upper", infinity, t, "i") + ");");
+  }
+  if (type == "DiscreteDerivative") return for_each(n, state(block, "i") + ".update(" + in("i") + ");");
+  if (type == "DiscretePid") {
+    return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
+                           argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
+                           argument(block, "n", pid_default_filter, t, "i") + ", " +
+                           argument(block, "lower", -infinity, t, "i") + ", " +
+                           argument(block, "upper", infinity, t, "i") + "}, " + period + ");");
+  }
+  return {};
+}
+
+// Hardware blocks: a pin through gpio_write/gpio_read, anything else through the port's resource calls as doubles,
+// element by element, as the interpreter hands them to the plant.
+std::string Generator::hardware_output(const ProgramBlock& block) const {
+  const std::string& type = block.type();
+  if (type == "Outport") return {};
+  if (type == "GpioOut") {
+    return "  duet::hardware::gpio_write(" + block.identifier + "_pin, " + element(block.inputs[0], "0") + ");\n";
+  }
+  if (type == "GpioIn") {
+    return "  " + element(block.outputs[0], "0") + " = duet::hardware::gpio_read(" + block.identifier + "_pin);\n";
+  }
+  const std::string resource = "\"" + hardware_resource(block) + "\"";
+  std::string text = "  {\n";
+  if (!block.inputs.empty()) {
+    std::string values;
+    for (const std::size_t signal : block.inputs) {
+      for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
+        values += (values.empty() ? "" : ", ") + std::string{"duet::blocks::convert<double>("} + element(signal, i) + ")";
+      }
+    }
+    return text + "    const double values[] = {" + values + "};\n    duet::hardware::write(" + resource +
+           ", values);\n  }\n";
+  }
+  std::size_t count = 0;
+  for (const std::size_t signal : block.outputs) count += program_.signals[signal].type.elements();
+  text += "    double values[" + std::to_string(count) + "]{};\n    duet::hardware::read(" + resource + ", values);\n";
+  std::size_t at = 0;
+  for (const std::size_t signal : block.outputs) {
+    const SignalType& type_of_signal = program_.signals[signal].type;
+    for (std::size_t i = 0; i < type_of_signal.elements(); ++i) {
+      text += "    " + element(signal, i) + " = duet::blocks::convert<" + type_of(type_of_signal.type) + ">(values[" +
+              std::to_string(at++) + "]);\n";
+    }
+  }
+  return text + "  }\n";
+}
+
+// The release countdown of the faster task, as the interpreter keeps it: the slower rate releases when it is 0.
+std::string Generator::rate_transition_output(const ProgramBlock& block) const {
+  const Transfer transfer = transfer_of(program_, block);
+  const std::size_t y = block.outputs[0];
+  const std::size_t n = program_.signals[y].type.elements();
+  const std::string member = "state." + block.identifier;
+  std::string read;
+  std::string text;
+  if (transfer.kind == Transfer::Kind::slow_to_fast) {
+    text += "  const bool " + block.identifier + "_release = " + member + "_countdown == 0;\n";
+    text += "  " + member + "_countdown = " + block.identifier + "_release ? " + std::to_string(transfer.ratio - 1) +
+            "U : " + member + "_countdown - 1U;\n";
+    read = member + ".read(" + block.identifier + "_release)";
+  } else {
+    read = member + ".read()";
+  }
+  if (n == 1) return text + "  " + element(y, "0") + " = " + read + ";\n";
+  return text + "  {\n    const auto& value = " + read + ";\n  " + for_each(n, element(y, "i") + " = value[i];") +
+         "  }\n";
+}
+
+std::string Generator::rate_transition_update(const ProgramBlock& block) const {
+  const Transfer transfer = transfer_of(program_, block);
+  const std::size_t u = block.inputs.at(0);
+  const std::size_t n = program_.signals[u].type.elements();
+  const std::string member = "state." + block.identifier;
+  std::string value = element(u, "0");
+  if (n > 1) {
+    value = "std::array<" + type_of(program_.signals[u].type.type) + ", " + std::to_string(n) + ">{";
+    for (std::size_t i = 0; i < n; ++i) value += (i == 0 ? "" : ", ") + element(u, i);
+    value += "}";
+  }
+  if (transfer.kind == Transfer::Kind::fast_to_slow) {
+    return "  {\n    const bool release = " + member + "_countdown == 0;\n    " + member +
+           "_countdown = release ? " + std::to_string(transfer.ratio - 1) + "U : " + member +
+           "_countdown - 1U;\n    " + member + ".write(" + value + ", release);\n  }\n";
+  }
+  return "  " + member + ".write(" + value + ");\n";
+}
+
+}  // namespace duet::model

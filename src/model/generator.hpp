@@ -1,0 +1,65 @@
+#pragma once
+// For code generation (private to src/model): where each signal lives in generated code, the layout of the
+// generated structures, and the C++ text of values and of each block's two phases.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "duet/model/program.hpp"
+
+namespace duet::model {
+
+// A member of a generated structure, at the offset the generator fixes (natural alignment, in model order).
+struct Field {
+  std::string name;
+  DataType type = DataType::float64;
+  std::size_t count = 1;
+  std::size_t offset = 0;
+};
+[[nodiscard]] std::vector<Field> lay_out(std::vector<Field> fields, std::size_t& size);
+
+// A value of `type` as C++ writes it exactly: 0.1F, 2.5, std::int16_t{-3}, true, -std::numeric_limits<float>::infinity().
+[[nodiscard]] std::string literal(DataType type, double value);
+
+class Generator {
+ public:
+  explicit Generator(const Program& program);
+
+  // Signals that live in the Signals structure: measurable, read in another task, computed at initialisation, or
+  // held by an enabled subsystem. The others are locals of their task's step function.
+  [[nodiscard]] bool is_member(std::size_t signal) const { return member_[signal]; }
+  [[nodiscard]] std::vector<Field> signal_fields() const;
+  [[nodiscard]] std::vector<Field> parameter_fields() const;
+
+  // Declarations of the State structure's members and their reset in initialize().
+  [[nodiscard]] std::string state_members() const;
+  [[nodiscard]] std::string state_resets() const;
+  // Namespace-scope constants the blocks need (pins, literal tables).
+  [[nodiscard]] std::string block_constants() const;
+
+  // The statements of a block's phase (indented), with locals declared where their driver computes them.
+  [[nodiscard]] std::string output_phase(std::size_t block) const;
+  [[nodiscard]] std::string update_phase(std::size_t block) const;
+
+ private:
+  [[nodiscard]] std::string storage(std::size_t signal) const;  // the variable, without a subscript
+  [[nodiscard]] std::string element(std::size_t signal, std::size_t index) const;
+  [[nodiscard]] std::string element(std::size_t signal, const std::string& index) const;
+  [[nodiscard]] std::string pointer(std::size_t signal) const;
+  [[nodiscard]] std::string argument(const ProgramBlock& block, const std::string& name, double fallback,
+                                     DataType type, const std::string& index) const;
+  [[nodiscard]] std::string state(const ProgramBlock& block, const std::string& index) const;
+  [[nodiscard]] std::string declare_outputs(const ProgramBlock& block) const;
+  [[nodiscard]] std::string guarded(const ProgramBlock& block, std::string statements) const;
+  [[nodiscard]] std::string output_statements(const ProgramBlock& block) const;
+  [[nodiscard]] std::string update_statements(const ProgramBlock& block) const;
+  [[nodiscard]] std::string hardware_output(const ProgramBlock& block) const;
+  [[nodiscard]] std::string rate_transition_output(const ProgramBlock& block) const;
+  [[nodiscard]] std::string rate_transition_update(const ProgramBlock& block) const;
+
+  const Program& program_;
+  std::vector<bool> member_;
+};
+
+}  // namespace duet::model

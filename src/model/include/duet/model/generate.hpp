@@ -1,0 +1,33 @@
+#pragma once
+// `duet gen`: freestanding C++ for the executive from a Program (docs/MODELS.md, "Generated code"):
+//   NAME.hpp      the parameter structure (the calibration segment: a working page in RAM and a reference page in
+//                 flash), the signal and state structures, initialize/terminate, a step function per task, and the
+//                 task table (duet::rt::ModelDescription) checked at compile time;
+//   NAME.cpp      their definitions; hardware blocks call the port's duet/hardware/hardware.hpp;
+//   NAME_xcp.hpp  the memory XCP may reach and the events, for the XCP slave;
+//   NAME.a2l      the A2L for XCP masters, with the generator's fixed layout (checked by static_assert);
+//   NAME.cmake    a CMake fragment that adds the library NAME_model.
+// Each file says which generator and model made it.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "duet/model/program.hpp"
+#include "duet/support/result.hpp"
+
+namespace duet::model {
+
+struct GeneratedFile {
+  std::string name;
+  std::string text;
+};
+
+// The XCP addresses of the layout: parameters and signals start here, each field at its offset.
+inline constexpr std::uint32_t parameters_xcp_address = 0x0001'0000;
+inline constexpr std::uint32_t signals_xcp_address = 0x0002'0000;
+
+// `source` names the model file in the files' first lines.
+[[nodiscard]] Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source);
+
+}  // namespace duet::model

@@ -1,0 +1,54 @@
+#pragma once
+// `duet sim`: a model run on the PC against a plant, in lock-step time. The executive runs the model's tasks on the
+// host port (duet/host/lock_step_port.hpp) exactly as it runs the firmware's: the base rate every base period, the
+// slower rates at their multiples (single-tasking, fastest first), interrupt tasks when the plant raises their
+// interrupt. Nothing depends on the PC's clock or scheduling, so every run with the same inputs gives the same
+// values, bit for bit.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "duet/model/program.hpp"
+#include "duet/plant/plant.hpp"
+#include "duet/rt/task_table.hpp"
+#include "duet/support/result.hpp"
+
+namespace duet::model {
+
+struct SimulationOptions {
+  double duration_s = 1.0;
+  // Signals to record by name; none: the measurable ones, or every signal if none is measurable.
+  std::vector<std::string> signals;
+};
+
+// One column per element of a recorded signal ("theta", or "x[0]", "x[1]" for a vector), one row per base tick:
+// the values after that tick's tasks ran.
+struct Recording {
+  std::vector<std::string> names;
+  std::vector<std::string> units;
+  std::vector<double> time_s;
+  std::vector<std::vector<double>> columns;
+};
+
+struct SimulationResult {
+  Recording recording;
+  std::uint64_t ticks = 0;
+  std::vector<std::uint32_t> activations;  // per task
+};
+
+[[nodiscard]] Result<SimulationResult> simulate(const Program& program, plant::Plant& plant,
+                                                const SimulationOptions& options);
+
+// The executive's view of the program's tasks, in the task table's order (duet/rt/task_table.hpp): periodic rates
+// fastest first, then interrupt tasks. Priorities: an interrupt task's group is the model's; the periodic rates take
+// the groups after the least urgent interrupt task (the base rate first), or start at 1 without interrupt tasks.
+struct TaskPriorities {
+  std::vector<rt::InterruptPriority> priorities;
+};
+[[nodiscard]] Result<TaskPriorities> task_priorities(const Program& program);
+
+// The recording as CSV: `time_s,name,...`, numbers exact (they read back as the same doubles).
+[[nodiscard]] std::string to_csv(const Recording& recording);
+
+}  // namespace duet::model

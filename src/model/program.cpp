@@ -1,0 +1,251 @@
+#include "duet/model/program.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include "duet/model/block_types.hpp"
+#include "duet/model/data_type.hpp"
+#include "duet/model/validate.hpp"
+#include "flat_model.hpp"
+#include "typing.hpp"
+
+namespace duet::model {
+
+std::size_t SignalType::elements() const {
+  std::size_t count = 1;
+  for (const std::size_t dimension : shape) count *= dimension;
+  return count;
+}
+
+std::string describe(const SignalType& type) {
+  std::string text{type_name(type.type)};
+  if (type.shape.size() == 1) text += "[" + std::to_string(type.shape[0]) + "]";
+  if (type.shape.size() == 2) text += "[" + std::to_string(type.shape[0]) + "x" + std::to_string(type.shape[1]) + "]";
+  return text;
+}
+
+const Argument* ProgramBlock::argument(const std::string& name) const {
+  const auto found = arguments.find(name);
+  return found == arguments.end() ? nullptr : &found->second;
+}
+
+std::optional<std::size_t> Program::find_signal(const std::string& name) const {
+  for (std::size_t index = 0; index < signals.size(); ++index) {
+    if (signals[index].name == name) return index;
+  }
+  return std::nullopt;
+}
+
+namespace {
+
+std::string identifier_of(const std::string& path) {
+  std::string text = path;
+  std::replace(text.begin(), text.end(), '/', '_');
+  return text;
+}
+
+// "u10" after "u9": numbered ports by their number, others in the order the type names them.
+std::vector<std::size_t> port_order(const Block& block, const std::vector<std::string_view>& declared) {
+  std::vector<std::size_t> order(block.inputs.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  const auto rank = [&](std::size_t k) -> std::size_t {
+    const std::string& port = block.inputs[k].port;
+    const auto named = std::find(declared.begin(), declared.end(), port);
+    if (named != declared.end()) return static_cast<std::size_t>(named - declared.begin());
+    if (port.size() > 1 && port[0] == 'u') return 1000 + std::stoul(port.substr(1));
+    return 100000 + k;
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
+  return order;
+}
+
+class ProgramBuilder {
+ public:
+  explicit ProgramBuilder(const Model& model) : model_(model), flat_(model), rates_(analyse_rates(model)) {
+    program_.model = &model;
+  }
+
+  ProgramBuild build(std::vector<Diagnostic> diagnostics) {
+    add_blocks();
+    type_signals();
+    for (const ProgramBlock& block : program_.blocks) check_types(program_, block, diagnostics);
+    check_declarations(diagnostics);
+    if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
+    lay_out_tasks();
+    return {std::move(program_), std::move(diagnostics)};
+  }
+
+ private:
+  void add_blocks() {
+    std::map<std::string, std::size_t> signal_of;
+    for (std::size_t driver = 0; driver < flat_.nodes.size(); ++driver) {
+      for (const std::string& output : flat_.nodes[driver].outputs) {
+        ProgramSignal signal;
+        signal.name = output;
+        signal.identifier = identifier_of(signal.name);
+        signal.driver = driver;
+        for (const SignalDeclaration& declaration : model_.signals) {
+          if (declaration.name != signal.name) continue;
+          signal.unit = declaration.unit;
+          signal.measurable = declaration.measurable;
+        }
+        signal_of[signal.name] = program_.signals.size();
+        program_.signals.push_back(signal);
+      }
+    }
+    for (const Node& node : flat_.nodes) {
+      ProgramBlock block;
+      block.path = node.path;
+      block.identifier = identifier_of(node.path);
+      block.block = node.block;
+      const BlockType* type = find_block_type(node.block->type);
+      const std::vector<std::string_view> declared = type != nullptr ? type->inputs : std::vector<std::string_view>{};
+      for (const std::size_t k : port_order(*node.block, declared)) {
+        block.inputs.push_back(signal_of.at(node.inputs[k].signal));
+        block.input_ports.push_back(node.block->inputs[k].port);
+      }
+      for (std::size_t k = 0; k < node.outputs.size(); ++k) {
+        block.outputs.push_back(signal_of.at(node.outputs[k]));
+        block.output_ports.push_back(node.block->outputs[k].port);
+      }
+      for (const std::string& enable : node.enables) block.enables.push_back(signal_of.at(enable));
+      for (const auto& [name, parameter] : node.block->parameters) block.arguments[name] = resolve(name, parameter);
+      const Argument* value = block.argument("value");
+      if (block.type() == "Constant" && value != nullptr && value->kind == Argument::Kind::parameter &&
+          !block.outputs.empty()) {
+        program_.signals[block.outputs[0]].parameter = value->parameter;
+      }
+      program_.blocks.push_back(std::move(block));
+    }
+  }
+
+  Argument resolve(const std::string& name, const BlockParameter& parameter) const {
+    Argument argument;
+    argument.text = parameter.text;
+    argument.location = parameter.location;
+    if (parameter.literal) {
+      argument.value = *parameter.literal;
+      return argument;
+    }
+    if (parameter.reference.empty() || is_word_parameter(name)) {
+      argument.kind = Argument::Kind::word;
+      return argument;
+    }
+    for (std::size_t index = 0; index < model_.parameters.size(); ++index) {
+      if (model_.parameters[index].name != parameter.reference) continue;
+      argument.kind = Argument::Kind::parameter;
+      argument.parameter = index;
+      argument.value = model_.parameters[index].value;
+      return argument;
+    }
+    for (const Constant& constant : model_.constants) {
+      if (constant.name == parameter.reference) argument.value = constant.value;
+    }
+    return argument;
+  }
+
+  // Types flow from drivers to readers until nothing changes; a signal no rule reaches (a loop of blocks that
+  // all inherit their type) is a double.
+  void type_signals() {
+    std::vector<std::optional<SignalType>> known(program_.signals.size());
+    bool guess_scalars = false;
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (const ProgramBlock& block : program_.blocks) {
+        KnownTypes inputs;
+        for (const std::size_t input : block.inputs) inputs.push_back(known[input]);
+        const KnownTypes outputs = infer_outputs(program_, block, inputs, guess_scalars);
+        for (std::size_t k = 0; k < outputs.size(); ++k) {
+          if (outputs[k] && !known[block.outputs[k]]) {
+            known[block.outputs[k]] = outputs[k];
+            changed = true;
+          }
+        }
+      }
+      if (!changed && !guess_scalars) {  // stuck in a loop: guess once, then go on
+        guess_scalars = true;
+        changed = true;
+      } else if (changed) {
+        guess_scalars = false;
+      }
+    }
+    for (std::size_t index = 0; index < known.size(); ++index) {
+      program_.signals[index].type = known[index].value_or(SignalType{});
+    }
+  }
+
+  // Declared types must be what the driver produces; no conversion is silent.
+  void check_declarations(std::vector<Diagnostic>& diagnostics) const {
+    for (const SignalDeclaration& declaration : model_.signals) {
+      const auto index = program_.find_signal(declaration.name);
+      if (!index) continue;
+      const ProgramSignal& signal = program_.signals[*index];
+      const SignalType declared{declaration.type.value_or(signal.type.type),
+                                declaration.shape.empty() ? signal.type.shape : declaration.shape};
+      if (declared == signal.type) continue;
+      const ProgramBlock& driver = program_.blocks[signal.driver];
+      diagnostics.push_back({Diagnostic::Severity::error, declaration.location,
+                             "type mismatch: signal '" + declaration.name + "' is declared " + describe(declared) +
+                                 " but block '" + driver.path + "' (" + driver.type() + ") drives it with " +
+                                 describe(signal.type),
+                             "declare it as " + describe(signal.type) + ", or convert it with a Convert block"});
+    }
+    std::map<std::string, std::string> seen;  // identifier -> signal
+    for (const ProgramSignal& signal : program_.signals) {
+      const auto [found, added] = seen.emplace(signal.identifier, signal.name);
+      if (!added) {
+        diagnostics.push_back({Diagnostic::Severity::error, program_.blocks[signal.driver].block->location,
+                               "signals '" + found->second + "' and '" + signal.name + "' both become '" +
+                                   signal.identifier + "' in generated code",
+                               "rename one of them"});
+      }
+    }
+  }
+
+  void lay_out_tasks() {
+    std::map<std::string, std::size_t> block_of;
+    for (std::size_t index = 0; index < program_.blocks.size(); ++index) block_of[program_.blocks[index].path] = index;
+    for (const Task& task : rates_.tasks) {
+      ProgramTask laid_out{task.name, task.rate, task.priority, {}, {}};
+      const std::size_t task_index = program_.tasks.size();
+      for (const std::string& path : task.blocks) {
+        ProgramBlock& block = program_.blocks[block_of.at(path)];
+        block.task = task_index;
+        block.update_task = task_index;
+        block.period_s = task.rate.kind == Rate::Kind::periodic ? task.period_us * 1e-6 : 0.0;
+        laid_out.outputs.push_back(block_of.at(path));
+      }
+      program_.tasks.push_back(std::move(laid_out));
+    }
+    for (const std::string& path : rates_.constant_blocks) {
+      program_.blocks[block_of.at(path)].task = at_initialisation;
+      program_.blocks[block_of.at(path)].update_task = at_initialisation;
+      program_.initial_outputs.push_back(block_of.at(path));
+    }
+    // A RateTransition takes its value in the task of what drives it.
+    for (ProgramBlock& block : program_.blocks) {
+      if (block.type() == "RateTransition" && !block.inputs.empty()) {
+        block.update_task = program_.blocks[program_.signals[block.inputs[0]].driver].task;
+      }
+    }
+    for (std::size_t index = 0; index < program_.blocks.size(); ++index) {
+      const std::size_t task = program_.blocks[index].update_task;
+      if (task != at_initialisation) program_.tasks[task].updates.push_back(index);
+    }
+  }
+
+  const Model& model_;
+  FlatModel flat_;
+  RateAnalysis rates_;
+  Program program_;
+};
+
+}  // namespace
+
+ProgramBuild build_program(const Model& model) {
+  std::vector<Diagnostic> diagnostics = validate(model);
+  if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
+  return ProgramBuilder{model}.build(std::move(diagnostics));
+}
+
+}  // namespace duet::model

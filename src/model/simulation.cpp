@@ -1,0 +1,172 @@
+#include "duet/model/simulation.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+
+#include "duet/host/lock_step_port.hpp"
+#include "duet/model/data_type.hpp"
+#include "duet/model/interpreter.hpp"
+#include "duet/rt/executive.hpp"
+
+namespace duet::model {
+namespace {
+
+constexpr std::size_t max_tasks = 16;  // the NVIC's 16 group levels bound a model's tasks anyway
+
+// The executive calls tasks through plain function pointers: one per task slot, each running that task of the
+// interpreter being simulated (one simulation at a time per thread).
+thread_local Interpreter* running = nullptr;
+
+template <std::size_t task>
+void run_task() {
+  running->run_task(task);
+}
+
+template <std::size_t... task>
+constexpr std::array<void (*)(), sizeof...(task)> task_entries(std::index_sequence<task...>) {
+  return {&run_task<task>...};
+}
+constexpr auto entries = task_entries(std::make_index_sequence<max_tasks>{});
+
+void nothing() {}
+
+struct Column {
+  std::size_t signal;
+  std::size_t element;
+};
+
+Result<std::vector<std::size_t>> recorded_signals(const Program& program, const SimulationOptions& options) {
+  std::vector<std::size_t> chosen;
+  for (const std::string& name : options.signals) {
+    const auto index = program.find_signal(name);
+    if (!index) return Failure{"the model has no signal '" + name + "'"};
+    chosen.push_back(*index);
+  }
+  if (!chosen.empty()) return chosen;
+  for (std::size_t index = 0; index < program.signals.size(); ++index) {
+    if (program.signals[index].measurable) chosen.push_back(index);
+  }
+  if (!chosen.empty()) return chosen;
+  for (std::size_t index = 0; index < program.signals.size(); ++index) chosen.push_back(index);
+  return chosen;
+}
+
+}  // namespace
+
+Result<TaskPriorities> task_priorities(const Program& program) {
+  int least_urgent_interrupt = 0;
+  for (const ProgramTask& task : program.tasks) {
+    if (task.rate.kind == Rate::Kind::interrupt) least_urgent_interrupt = std::max(least_urgent_interrupt, task.priority.value_or(0));
+  }
+  TaskPriorities result;
+  int next_rate_group = least_urgent_interrupt + 1;
+  for (const ProgramTask& task : program.tasks) {
+    const int group = task.rate.kind == Rate::Kind::interrupt ? task.priority.value_or(0) : next_rate_group++;
+    if (group < 0 || group > 15) {
+      return Failure{"task '" + task.name + "' would need NVIC group " + std::to_string(group) +
+                     "; the core has 16 (0 to 15): give the interrupt tasks more urgent priorities"};
+    }
+    result.priorities.push_back({static_cast<std::uint8_t>(group), 0});
+  }
+  return result;
+}
+
+Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, const SimulationOptions& options) {
+  if (program.tasks.size() > max_tasks) return Failure{"the model has more than 16 tasks"};
+  if (!(options.duration_s >= 0) || !std::isfinite(options.duration_s)) {
+    return Failure{"the duration must be a number of seconds, 0 or more"};
+  }
+  auto signals = recorded_signals(program, options);
+  if (!signals) return Failure{signals.error()};
+  auto priorities = task_priorities(program);
+  if (!priorities) return Failure{priorities.error()};
+  auto created = Interpreter::create(program, plant);
+  if (!created) return Failure{created.error()};
+  Interpreter& interpreter = *created.value();
+
+  std::vector<rt::Task> tasks;
+  for (std::size_t index = 0; index < program.tasks.size(); ++index) {
+    const ProgramTask& task = program.tasks[index];
+    rt::Task entry{.name = task.name, .priority = priorities.value().priorities[index], .entry = entries[index]};
+    if (task.rate.kind == Rate::Kind::interrupt) {
+      entry.kind = rt::TaskKind::interrupt;
+    } else {
+      entry.period_ticks = static_cast<std::uint32_t>(task.rate.multiple);
+    }
+    tasks.push_back(entry);
+  }
+  if (tasks.empty()) {  // a model of constants only still ticks, so that its signals are recorded over time
+    tasks.push_back({.name = "rate 1", .priority = {1, 0}, .entry = nothing});
+  }
+  const double base_period_s = program.model->base_period_us * 1e-6;
+  const rt::ModelDescription description{.name = program.model->name,
+                                         .base_period_ns = static_cast<std::uint32_t>(std::llround(base_period_s * 1e9)),
+                                         .tasks = tasks,
+                                         .initialize = nothing,
+                                         .terminate = nothing};
+  host::LockStepPort port{description};
+  rt::Executive<host::LockStepPort, max_tasks> executive{description, port};
+  port.attach(executive);
+  running = &interpreter;
+  interpreter.initialize();
+  if (const rt::TaskTableError error = executive.initialize(); error != rt::TaskTableError::none) {
+    running = nullptr;
+    return Failure{"the executive refused the model's task table (error " + std::to_string(static_cast<int>(error)) +
+                   ")"};
+  }
+  (void)executive.begin();
+
+  SimulationResult result;
+  std::vector<Column> columns;
+  for (const std::size_t signal : signals.value()) {
+    const ProgramSignal& info = program.signals[signal];
+    const std::size_t count = info.type.elements();
+    for (std::size_t element = 0; element < count; ++element) {
+      columns.push_back({signal, element});
+      result.recording.names.push_back(count == 1 ? info.name : info.name + "[" + std::to_string(element) + "]");
+      result.recording.units.push_back(info.unit);
+    }
+  }
+  result.recording.columns.resize(columns.size());
+  const auto ticks = static_cast<std::uint64_t>(std::floor(options.duration_s / base_period_s + 1e-9)) + 1U;
+  const auto raise = [&](std::string_view interrupt) {
+    for (std::size_t task = 0; task < program.tasks.size(); ++task) {
+      if (program.tasks[task].rate.kind == Rate::Kind::interrupt && program.tasks[task].rate.interrupt == interrupt) {
+        port.raise(task);
+      }
+    }
+  };
+  for (std::uint64_t tick = 0; tick < ticks; ++tick) {
+    const double now = static_cast<double>(tick) * base_period_s;
+    plant.advance(now, raise);
+    port.advance(1);
+    result.recording.time_s.push_back(now);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+      result.recording.columns[k].push_back(interpreter.signal(columns[k].signal, columns[k].element));
+    }
+  }
+  executive.request_stop(rt::StopReason::external);
+  executive.end();
+  running = nullptr;
+  result.ticks = ticks;
+  for (std::size_t task = 0; task < program.tasks.size(); ++task) {
+    result.activations.push_back(executive.statistics(task).activations);
+  }
+  return result;
+}
+
+std::string to_csv(const Recording& recording) {
+  std::string text = "time_s";
+  for (const std::string& name : recording.names) text += "," + name;
+  text += '\n';
+  for (std::size_t row = 0; row < recording.time_s.size(); ++row) {
+    text += format_number(recording.time_s[row]);
+    for (const auto& column : recording.columns) text += "," + format_number(column[row]);
+    text += '\n';
+  }
+  return text;
+}
+
+}  // namespace duet::model

@@ -1,0 +1,57 @@
+#pragma once
+// What a simulated model is connected to: a plant sees the model's hardware blocks as named resources — a pin
+// ("gpio:LED0"), a PWM channel ("pwm:TIM1/1"), an ADC ("adc:ADC1/6"), ... — reads what the model writes to its
+// outputs, answers what the model reads from its inputs, and raises the interrupts that trigger the model's
+// interrupt tasks. Time is the simulation's: the plant moves only when advance() is called, so a run is the same
+// every time.
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "duet/support/result.hpp"
+
+namespace duet::plant {
+
+// Raises the interrupt of that name now; the simulation runs the interrupt task it triggers.
+using RaiseInterrupt = std::function<void(std::string_view interrupt)>;
+
+class Plant {
+ public:
+  Plant() = default;
+  Plant(const Plant&) = delete;
+  Plant& operator=(const Plant&) = delete;
+  virtual ~Plant() = default;
+
+  // Moves the plant's time on to `time_s`, raising the interrupts that happen by then.
+  virtual void advance(double time_s, const RaiseInterrupt& raise) = 0;
+  // The model drives an output resource (an actuator) with these element values.
+  virtual void write(std::string_view resource, std::span<const double> values) = 0;
+  // The model reads an input resource (a sensor); the plant fills every element.
+  virtual void read(std::string_view resource, std::span<double> values) = 0;
+};
+
+// A plant that holds the last value written to each resource and reads back whatever was written to it (zeros for a
+// resource never written): outputs can be looked at, and a model can read its own outputs as inputs.
+class Loopback : public Plant {
+ public:
+  void advance(double time_s, const RaiseInterrupt& raise) override;
+  void write(std::string_view resource, std::span<const double> values) override;
+  void read(std::string_view resource, std::span<double> values) override;
+
+  [[nodiscard]] std::vector<double> value(std::string_view resource) const;
+  [[nodiscard]] std::size_t writes() const { return writes_; }
+
+ private:
+  std::vector<std::pair<std::string, std::vector<double>>> values_;
+  std::size_t writes_ = 0;
+};
+
+// The plants `duet sim --plant NAME` knows, by name: "none" (a Loopback). `seed` makes noisy plants repeatable.
+[[nodiscard]] Result<std::unique_ptr<Plant>> make_plant(std::string_view name, std::uint64_t seed);
+[[nodiscard]] std::vector<std::string> plant_names();
+
+}  // namespace duet::plant
