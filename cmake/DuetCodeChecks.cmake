@@ -8,6 +8,7 @@ file(GLOB_RECURSE duet_cpp_files CONFIGURE_DEPENDS
      LIST_DIRECTORIES false RELATIVE "${PROJECT_SOURCE_DIR}"
      "${PROJECT_SOURCE_DIR}/src/*.[ch]pp" "${PROJECT_SOURCE_DIR}/ports/*.[ch]pp" "${PROJECT_SOURCE_DIR}/apps/*.[ch]pp"
      "${PROJECT_SOURCE_DIR}/tests/*.[ch]pp" "${PROJECT_SOURCE_DIR}/bench/*.[ch]pp")
+list(FILTER duet_cpp_files EXCLUDE REGEX "/generated/")  # duet gen's output, laid out by the generator
 
 find_program(DUET_CLANG_FORMAT NAMES clang-format clang-format-14)
 if(DUET_CLANG_FORMAT)

@@ -51,7 +51,7 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
   }
-  auto simulated = model::simulate(*build.program, *plant.value(), {options.duration_s, options.signals});
+  auto simulated = model::simulate(*build.program, *plant.value(), {options.duration_s, options.signals, {}});
   if (!simulated) {
     streams.err << "duet sim: " << simulated.error() << '\n';
     return ExitCode::failure;
@@ -61,8 +61,8 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
   const std::string csv = options.csv.empty() ? name + ".csv" : options.csv;
   if (!write_file(csv, model::to_csv(recording), streams)) return ExitCode::failure;
   streams.out << "simulated " << name << " for " << options.duration_s << " s (" << simulated.value().ticks
-              << " base ticks) against plant '" << options.plant << "'; wrote " << csv << " ("
-              << recording.names.size() << " columns)";
+              << " base ticks) against plant '" << options.plant << "'; wrote " << csv << " (" << recording.names.size()
+              << " columns)";
   if (!options.no_plot) {
     plot::Figure figure{name + " against plant '" + options.plant + "'", "s", recording.time_s, {}};
     for (std::size_t k = 0; k < recording.names.size(); ++k) {

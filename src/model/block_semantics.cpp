@@ -30,11 +30,11 @@ std::size_t demux_element(const std::string& port) { return std::stoul(port.subs
 std::optional<blocks::CompareOperator> parse_compare_operator(std::string_view text) {
   using blocks::CompareOperator;
   constexpr std::array<std::pair<std::string_view, CompareOperator>, 6> names{{{"<", CompareOperator::less},
-                                                                              {"<=", CompareOperator::less_equal},
-                                                                              {"==", CompareOperator::equal},
-                                                                              {"!=", CompareOperator::not_equal},
-                                                                              {">=", CompareOperator::greater_equal},
-                                                                              {">", CompareOperator::greater}}};
+                                                                               {"<=", CompareOperator::less_equal},
+                                                                               {"==", CompareOperator::equal},
+                                                                               {"!=", CompareOperator::not_equal},
+                                                                               {">=", CompareOperator::greater_equal},
+                                                                               {">", CompareOperator::greater}}};
   for (const auto& [name, op] : names) {
     if (name == text) return op;
   }

@@ -58,8 +58,8 @@ const std::vector<BlockType> table{
 std::span<const BlockType> block_types() { return table; }
 
 bool is_word_parameter(std::string_view parameter) {
-  constexpr std::string_view words[] = {"pin",      "timer", "spi",  "adc",  "line",
-                                       "channel", "operator", "mode", "type", "signs"};
+  constexpr std::string_view words[] = {"pin",     "timer",    "spi",  "adc",  "line",
+                                        "channel", "operator", "mode", "type", "signs"};
   return std::find(std::begin(words), std::end(words), parameter) != std::end(words);
 }
 

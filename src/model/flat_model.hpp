@@ -2,6 +2,7 @@
 // For the model's passes (private to src/model): the model flattened into blocks with resolved signal names. A
 // subsystem's ports stand for the parent's signals; blocks inside a triggered subsystem belong to its interrupt task.
 
+#include <algorithm>
 #include <cstddef>
 #include <map>
 #include <string>
@@ -40,6 +41,18 @@ class FlatModel {
   }
 
   std::vector<Node> nodes;
+
+  // The name a resolved signal has furthest out: a subsystem's output is known by the parent's signal it drives.
+  [[nodiscard]] std::string outermost_name(const std::string& resolved) const {
+    std::string best = resolved;
+    for (const auto& [outer, inner] : aliases_) {
+      if (resolve(outer) == resolved &&
+          std::count(outer.begin(), outer.end(), '/') < std::count(best.begin(), best.end(), '/')) {
+        best = outer;
+      }
+    }
+    return best;
+  }
 
  private:
   void scope(const std::vector<Block>& blocks, const std::string& prefix, const std::string& interrupt,

@@ -50,15 +50,14 @@ std::pair<std::uint8_t, std::uint8_t> event_cycle(double period_ns) {
 
 const std::set<std::string>& keywords() {
   static const std::set<std::string> words{
-      "alignas",  "alignof",   "and",       "asm",          "auto",       "bool",      "break",    "case",
-      "catch",    "char",      "class",     "const",        "constexpr",  "continue",  "default",  "delete",
-      "do",       "double",    "else",      "enum",         "explicit",   "export",    "extern",   "false",
-      "float",    "for",       "friend",    "goto",         "if",         "inline",    "int",      "long",
-      "mutable",  "namespace", "new",       "noexcept",     "not",        "nullptr",   "operator", "or",
-      "private",  "protected", "public",    "register",     "return",     "short",     "signed",   "sizeof",
-      "static",   "struct",    "switch",    "template",     "this",       "throw",     "true",     "try",
-      "typedef",  "typename",  "union",     "unsigned",     "using",      "virtual",   "void",     "volatile",
-      "while",    "xor",       "signals",   "state",        "parameters", "p",         "description"};
+      "alignas",  "alignof", "and",      "asm",       "auto",     "bool",       "break",     "case",       "catch",
+      "char",     "class",   "const",    "constexpr", "continue", "default",    "delete",    "do",         "double",
+      "else",     "enum",    "explicit", "export",    "extern",   "false",      "float",     "for",        "friend",
+      "goto",     "if",      "inline",   "int",       "long",     "mutable",    "namespace", "new",        "noexcept",
+      "not",      "nullptr", "operator", "or",        "private",  "protected",  "public",    "register",   "return",
+      "short",    "signed",  "sizeof",   "static",    "struct",   "switch",     "template",  "this",       "throw",
+      "true",     "try",     "typedef",  "typename",  "union",    "unsigned",   "using",     "virtual",    "void",
+      "volatile", "while",   "xor",      "signals",   "state",    "parameters", "p",         "description"};
   return words;
 }
 
@@ -143,7 +142,8 @@ class FileWriter {
     text += comment(program_.model->description);
     text += "#pragma once\n\n#include <array>\n#include <cstddef>\n#include <cstdint>\n\n";
     text += "#include \"duet/blocks/state.hpp\"\n#include \"duet/rt/rate_transition.hpp\"\n";
-    text += "#include \"duet/hardware/hardware.hpp\"\n#include \"duet/rt/task_table.hpp\"\n\nnamespace " + name_ + " {\n\n";
+    text +=
+        "#include \"duet/hardware/hardware.hpp\"\n#include \"duet/rt/task_table.hpp\"\n\nnamespace " + name_ + " {\n\n";
     text += "// The tunable parameters: the calibration segment. `parameters` is the working page (RAM) that XCP\n";
     text += "// writes, `reference_parameters` the model's values (flash); the steps read the page `parameter_page`\n";
     text += "// points to (XCP's SET_CAL_PAGE switches it).\nstruct Parameters {\n" + members(parameters_) + "};\n\n";
@@ -156,7 +156,7 @@ class FileWriter {
     for (const ProgramTask& task : program_.tasks) {
       text += "void " + task_function(task) + "();  // " + task.name + "\n";
     }
-    text += "\n// The task table for the executive, checked at compile time.\n";
+    text += "\n// The task table for the executive (checked at compile time in " + name_ + ".cpp).\n";
     text += "inline constexpr duet::rt::Task tasks[] = {\n";
     for (std::size_t index = 0; index < program_.tasks.size(); ++index) {
       const ProgramTask& task = program_.tasks[index];
@@ -177,16 +177,18 @@ class FileWriter {
             ",\n                                                    .tasks = tasks,\n" +
             "                                                    .initialize = initialize,\n" +
             "                                                    .terminate = terminate};\n";
-    text += "static_assert(duet::rt::check(description) == duet::rt::TaskTableError::none);\n\n";
-    text += "}  // namespace " + name_ + "\n";
+    text += "\n}  // namespace " + name_ + "\n";
     return text;
   }
 
   std::string values(const Parameter& parameter) const {
     std::string text;
     for (std::size_t i = 0; i < parameter.value.elements.size(); ++i) {
-      if (i != 0) text += i % 8 == 0 ? ",\n     " : ", ";
-      text += literal(parameter.type, parameter.value.elements[i]);
+      if (i != 0) text += i % 16 == 0 ? ",\n     " : ", ";
+      // Elements of an integer array need no type: an initializer list converts constants that fit.
+      const std::string element = literal(parameter.type, parameter.value.elements[i]);
+      const bool integer_array = parameter.value.elements.size() > 1 && is_integer(parameter.type);
+      text += integer_array ? element.substr(element.find('{') + 1, element.size() - element.find('{') - 2) : element;
     }
     return parameter.value.elements.size() > 1 ? "{" + text + "}" : text;
   }
@@ -199,7 +201,8 @@ class FileWriter {
     text += "#include \"duet/blocks/nonlinear.hpp\"\n#include \"duet/blocks/table.hpp\"\n";
     text += "#include \"duet/blocks/trigonometry.hpp\"\n#include \"duet/hardware/hardware.hpp\"\n\n";
     text += "namespace " + name_ + " {\n\n";
-    text += offset_checks("Parameters", parameters_, parameters_size_) + offset_checks("Signals", signals_, signals_size_);
+    text +=
+        offset_checks("Parameters", parameters_, parameters_size_) + offset_checks("Signals", signals_, signals_size_);
     std::string initial;
     for (const Parameter& parameter : program_.model->parameters) {
       initial += "    ." + parameter.name + " = " + values(parameter) + ",\n";
@@ -207,7 +210,7 @@ class FileWriter {
     text += "\nParameters parameters{\n" + initial + "};\nconst Parameters reference_parameters{\n" + initial + "};\n";
     text += "const std::uint8_t* volatile parameter_page = nullptr;\nSignals signals{};\nState state{};\n\n";
     text += "namespace {\n\n" + generator_.block_constants();
-    text += "\n// The page the steps read.\nconst Parameters& parameters_in_use() {\n";
+    text += "\n// The page the steps read.\n[[maybe_unused]] const Parameters& parameters_in_use() {\n";
     text += "  return *std::launder(reinterpret_cast<const Parameters*>(parameter_page));\n}\n\n}  // namespace\n\n";
     text += "void initialize() {\n  parameter_page = reinterpret_cast<const std::uint8_t*>(&parameters);\n";
     text += generator_.state_resets();
@@ -222,6 +225,8 @@ class FileWriter {
       for (const std::size_t block : task.updates) body += generator_.update_phase(block);
       text += "\nvoid " + task_function(task) + "() {\n" + (reads_parameters(body) ? read_page : "") + body + "}\n";
     }
+    text += "\n// The task table fits the executive (duet/rt/task_table.hpp).\n";
+    text += "static_assert(duet::rt::check(description) == duet::rt::TaskTableError::none);\n";
     return text + "\n}  // namespace " + name_ + "\n";
   }
 
@@ -241,7 +246,8 @@ class FileWriter {
     text += "          .ecu_page = &parameter_page};\n}\n\n";
     text += "inline duet::xcp::MemoryRegion signals_region() {\n";
     text += "  return {.name = \"signals\",\n          .address = signals_address,\n";
-    text += "          .size = sizeof(Signals),\n          .memory = reinterpret_cast<std::uint8_t*>(&signals)};\n}\n\n";
+    text +=
+        "          .size = sizeof(Signals),\n          .memory = reinterpret_cast<std::uint8_t*>(&signals)};\n}\n\n";
     text += "inline constexpr duet::xcp::EventChannel events[] = {\n";
     for (const ProgramTask& task : program_.tasks) {
       const double period_ns = task.rate.kind == Rate::Kind::periodic
@@ -264,11 +270,12 @@ class FileWriter {
       description.description.pop_back();
     }
     if (!parameters_.empty()) {
-      description.memory.push_back({"parameters", 0, parameters_xcp_address,
-                                    static_cast<std::uint32_t>(parameters_size_), true});
+      description.memory.push_back(
+          {"parameters", 0, parameters_xcp_address, static_cast<std::uint32_t>(parameters_size_), true});
     }
     if (!signals_.empty()) {
-      description.memory.push_back({"signals", 0, signals_xcp_address, static_cast<std::uint32_t>(signals_size_), false});
+      description.memory.push_back(
+          {"signals", 0, signals_xcp_address, static_cast<std::uint32_t>(signals_size_), false});
     }
     for (std::size_t index = 0; index < program_.model->parameters.size(); ++index) {
       const Parameter& parameter = program_.model->parameters[index];
@@ -281,8 +288,9 @@ class FileWriter {
       description.characteristics.push_back(variable);
     }
     for (const Field& field : signals_) {
-      const auto signal = std::find_if(program_.signals.begin(), program_.signals.end(),
-                                       [&field](const ProgramSignal& candidate) { return candidate.identifier == field.name; });
+      const auto signal =
+          std::find_if(program_.signals.begin(), program_.signals.end(),
+                       [&field](const ProgramSignal& candidate) { return candidate.identifier == field.name; });
       if (signal == program_.signals.end() || !signal->measurable) continue;
       xcp::host::Variable variable = a2l_variable(field, signals_xcp_address);
       variable.name = signal->name;
@@ -326,7 +334,8 @@ class FileWriter {
 
   std::string cmake() const {
     std::string text = banner("#", source_);
-    text += "# The library " + name_ + "_model: the model's code for the executive. It needs the targets duet_blocks,\n";
+    text +=
+        "# The library " + name_ + "_model: the model's code for the executive. It needs the targets duet_blocks,\n";
     text += "# duet_rt and duet_xcp, and duet_hardware from the port the build is for.\n";
     text += "add_library(" + name_ + "_model STATIC ${CMAKE_CURRENT_LIST_DIR}/" + name_ + ".cpp)\n";
     text += "target_include_directories(" + name_ + "_model PUBLIC ${CMAKE_CURRENT_LIST_DIR})\n";

@@ -30,7 +30,8 @@ std::string type_of(DataType type) { return std::string{cpp_type(type)}; }
 std::string for_each(std::size_t count, const std::string& body_with_i) {
   if (count == 1) {
     std::string body = body_with_i;
-    for (std::size_t at = body.find("[i]"); at != std::string::npos; at = body.find("[i]", at)) body.replace(at, 3, "[0]");
+    for (std::size_t at = body.find("[i]"); at != std::string::npos; at = body.find("[i]", at))
+      body.replace(at, 3, "[0]");
     return "  " + body + "\n";
   }
   return "  for (std::size_t i = 0; i < " + std::to_string(count) + "; ++i) " + body_with_i + "\n";
@@ -75,8 +76,8 @@ std::string literal(DataType type, double value) {
       return converted ? "true" : "false";
     } else if constexpr (std::is_floating_point_v<T>) {
       const std::string suffix = std::is_same_v<T, float> ? "F" : "";
-      const std::string limits = "std::numeric_limits<" + type_of(std::is_same_v<T, float> ? DataType::float32
-                                                                                             : DataType::float64) +
+      const std::string limits = "std::numeric_limits<" +
+                                 type_of(std::is_same_v<T, float> ? DataType::float32 : DataType::float64) +
                                  ">::infinity()";
       if (std::isinf(converted)) return converted < 0 ? "-" + limits : limits;
       return shortest(converted) + suffix;
@@ -164,8 +165,9 @@ std::string Generator::state_members() const {
     const std::string count = type.elements() > 1 ? "[" + std::to_string(type.elements()) + "]" : "";
     if (block.type() == "RateTransition") {
       const Transfer transfer = transfer_of(program_, block);
-      const std::string value =
-          type.elements() > 1 ? "std::array<" + element_type + ", " + std::to_string(type.elements()) + ">" : element_type;
+      const std::string value = type.elements() > 1
+                                    ? "std::array<" + element_type + ", " + std::to_string(type.elements()) + ">"
+                                    : element_type;
       const char* kind = transfer.kind == Transfer::Kind::fast_to_slow   ? "FastToSlow"
                          : transfer.kind == Transfer::Kind::slow_to_fast ? "SlowToFast"
                                                                          : "AsyncTransfer";
@@ -245,7 +247,8 @@ std::string Generator::guarded(const ProgramBlock& block, std::string statements
   if (block.enables.empty() || statements.empty()) return statements;
   std::string condition;
   for (const std::size_t signal : block.enables) {
-    condition += (condition.empty() ? "" : " && ") + std::string{"duet::blocks::convert<bool>("} + element(signal, "0") + ")";
+    condition +=
+        (condition.empty() ? "" : " && ") + std::string{"duet::blocks::convert<bool>("} + element(signal, "0") + ")";
   }
   std::string indented;
   for (std::size_t start = 0; start < statements.size();) {
@@ -322,7 +325,8 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
     std::size_t at = 0;
     for (std::size_t k = 0; k < block.inputs.size(); ++k) {
       const std::size_t count = program_.signals[block.inputs[k]].type.elements();
-      for (std::size_t i = 0; i < count; ++i) text += "  " + element(y, at++) + " = " + element(block.inputs[k], i) + ";\n";
+      for (std::size_t i = 0; i < count; ++i)
+        text += "  " + element(y, at++) + " = " + element(block.inputs[k], i) + ";\n";
     }
     return text;
   }
@@ -342,9 +346,9 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
   if (type == "Lookup") {
     const Argument* table = block.argument("table");
     const std::size_t count = table->value.elements.size();
-    std::string data = table->kind == Argument::Kind::parameter
-                           ? (count > 1 ? "p." + program_.parameter(*table).name : "&p." + program_.parameter(*table).name)
-                           : block.identifier + "_table";
+    std::string data = table->kind == Argument::Kind::parameter ? (count > 1 ? "p." + program_.parameter(*table).name
+                                                                             : "&p." + program_.parameter(*table).name)
+                                                                : block.identifier + "_table";
     if (table->kind != Argument::Kind::parameter && count == 1) data = "&" + literal(t, table->value.elements[0]);
     return assign("duet::blocks::element_at(std::span<const " + type_of(t) + ">{" + data + ", " +
                   std::to_string(count) + "}, " + in(0, "0") + ")");
@@ -366,8 +370,9 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
   if (type == "DiscretePid") {
     return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
                   argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
-                  argument(block, "n", pid_default_filter, t, "i") + ", " + argument(block, "lower", -infinity, t, "i") +
-                  ", " + argument(block, "upper", infinity, t, "i") + "})");
+                  argument(block, "n", pid_default_filter, t, "i") + ", " +
+                  argument(block, "lower", -infinity, t, "i") + ", " + argument(block, "upper", infinity, t, "i") +
+                  "})");
   }
   return "  #error \"duet gen: block type " + type + " is not generated yet\"\n";
 }
@@ -382,7 +387,8 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
   const std::string period = literal(t, block.period_s);
   const auto in = [&](const std::string& index) { return element(block.inputs.at(0), index); };
   if (type == "UnitDelay") return for_each(n, state(block, "i") + ".update(" + in("i") + ");");
-  if (type == "Counter") return for_each(n, state(block, "i") + ".update(" + argument(block, "limit", 0, t, "i") + ");");
+  if (type == "Counter")
+    return for_each(n, state(block, "i") + ".update(" + argument(block, "limit", 0, t, "i") + ");");
   if (type == "DiscreteIntegrator") {
     return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
                            period + ", " + argument(block, "lower", -infinity, t, "i") + ", " +
@@ -416,7 +422,8 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
     std::string values;
     for (const std::size_t signal : block.inputs) {
       for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
-        values += (values.empty() ? "" : ", ") + std::string{"duet::blocks::convert<double>("} + element(signal, i) + ")";
+        values +=
+            (values.empty() ? "" : ", ") + std::string{"duet::blocks::convert<double>("} + element(signal, i) + ")";
       }
     }
     return text + "    const double values[] = {" + values + "};\n    duet::hardware::write(" + resource +
@@ -469,9 +476,9 @@ std::string Generator::rate_transition_update(const ProgramBlock& block) const {
     value += "}";
   }
   if (transfer.kind == Transfer::Kind::fast_to_slow) {
-    return "  {\n    const bool release = " + member + "_countdown == 0;\n    " + member +
-           "_countdown = release ? " + std::to_string(transfer.ratio - 1) + "U : " + member +
-           "_countdown - 1U;\n    " + member + ".write(" + value + ", release);\n  }\n";
+    return "  {\n    const bool release = " + member + "_countdown == 0;\n    " + member + "_countdown = release ? " +
+           std::to_string(transfer.ratio - 1) + "U : " + member + "_countdown - 1U;\n    " + member + ".write(" +
+           value + ", release);\n  }\n";
   }
   return "  " + member + ".write(" + value + ");\n";
 }

@@ -19,7 +19,8 @@ struct Field {
 };
 [[nodiscard]] std::vector<Field> lay_out(std::vector<Field> fields, std::size_t& size);
 
-// A value of `type` as C++ writes it exactly: 0.1F, 2.5, std::int16_t{-3}, true, -std::numeric_limits<float>::infinity().
+// A value of `type` as C++ writes it exactly: 0.1F, 2.5, std::int16_t{-3}, true,
+// -std::numeric_limits<float>::infinity().
 [[nodiscard]] std::string literal(DataType type, double value);
 
 class Generator {
@@ -47,8 +48,8 @@ class Generator {
   [[nodiscard]] std::string element(std::size_t signal, std::size_t index) const;
   [[nodiscard]] std::string element(std::size_t signal, const std::string& index) const;
   [[nodiscard]] std::string pointer(std::size_t signal) const;
-  [[nodiscard]] std::string argument(const ProgramBlock& block, const std::string& name, double fallback,
-                                     DataType type, const std::string& index) const;
+  [[nodiscard]] std::string argument(const ProgramBlock& block, const std::string& name, double fallback, DataType type,
+                                     const std::string& index) const;
   [[nodiscard]] std::string state(const ProgramBlock& block, const std::string& index) const;
   [[nodiscard]] std::string declare_outputs(const ProgramBlock& block) const;
   [[nodiscard]] std::string guarded(const ProgramBlock& block, std::string statements) const;

@@ -28,7 +28,7 @@ struct Interpreter::Storage {
   std::vector<double> reference;
   const std::byte* page = nullptr;  // what the blocks read: working or reference
   const std::byte* working_base = nullptr;
-  std::deque<std::vector<double>> literals;     // each literal converted to its block's type
+  std::deque<std::vector<double>> literals;    // each literal converted to its block's type
   std::deque<const std::byte*> literal_bases;  // stable pointers to them, for Operand
 };
 
@@ -254,10 +254,12 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
   }
   if (type == "DiscretePid") {
     auto states = std::make_shared<std::vector<blocks::DiscretePid<T>>>(n);
-    const std::array<Operand<T>, 6> gains{
-        c.argument<T>(block, "p", 0),          c.argument<T>(block, "i", 0),
-        c.argument<T>(block, "d", 0),          c.argument<T>(block, "n", pid_default_filter),
-        c.argument<T>(block, "lower", -infinity), c.argument<T>(block, "upper", infinity)};
+    const std::array<Operand<T>, 6> gains{c.argument<T>(block, "p", 0),
+                                          c.argument<T>(block, "i", 0),
+                                          c.argument<T>(block, "d", 0),
+                                          c.argument<T>(block, "n", pid_default_filter),
+                                          c.argument<T>(block, "lower", -infinity),
+                                          c.argument<T>(block, "upper", infinity)};
     const auto gains_of = [gains](std::size_t i) {
       return blocks::PidGains<T>{gains[0][i], gains[1][i], gains[2][i], gains[3][i], gains[4][i], gains[5][i]};
     };
@@ -346,7 +348,8 @@ Compiled any_type(Compiler& c, const ProgramBlock& block) {
   }
   if (type == "Mux") {
     std::vector<std::pair<Operand<T>, std::size_t>> inputs;
-    for (std::size_t k = 0; k < block.inputs.size(); ++k) inputs.emplace_back(c.input<T>(block, k), c.elements_in(block, k));
+    for (std::size_t k = 0; k < block.inputs.size(); ++k)
+      inputs.emplace_back(c.input<T>(block, k), c.elements_in(block, k));
     T* y = c.output<T>(block, 0);
     return {{[inputs, y] {
                std::size_t at = 0;

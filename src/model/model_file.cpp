@@ -383,8 +383,8 @@ Model model(const YAML::Node& root, const std::string& file) {
         }
         for (double element : parameter.value.elements) {
           if (!fits(element, parameter.type)) {
-            fail(fields["value"], "parameter " + parameter.name + ": " + format_number(element) + " is not a value of " +
-                                      "its type " + std::string{type_name(parameter.type)});
+            fail(fields["value"], "parameter " + parameter.name + ": " + format_number(element) +
+                                      " is not a value of " + "its type " + std::string{type_name(parameter.type)});
           }
           if ((parameter.minimum && element < *parameter.minimum) ||
               (parameter.maximum && element > *parameter.maximum)) {

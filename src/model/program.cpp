@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 
 #include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
@@ -44,16 +45,21 @@ std::string identifier_of(const std::string& path) {
   return text;
 }
 
-// "u10" after "u9": numbered ports by their number, others in the order the type names them.
+// "u10" after "u9": numbered ports by their number, others in the order the type names them; a Code block's ports as
+// the model lists them (its function takes a structure of them, whatever their names).
 std::vector<std::size_t> port_order(const Block& block, const std::vector<std::string_view>& declared) {
   std::vector<std::size_t> order(block.inputs.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  const auto rank = [&](std::size_t k) -> std::size_t {
+  if (block.code) return order;
+  // (group, number of digits, digits): compares numbers of any length without converting them.
+  const auto rank = [&](std::size_t k) -> std::tuple<std::size_t, std::size_t, std::string> {
     const std::string& port = block.inputs[k].port;
     const auto named = std::find(declared.begin(), declared.end(), port);
-    if (named != declared.end()) return static_cast<std::size_t>(named - declared.begin());
-    if (port.size() > 1 && port[0] == 'u') return 1000 + std::stoul(port.substr(1));
-    return 100000 + k;
+    if (named != declared.end()) return {static_cast<std::size_t>(named - declared.begin()), 0, {}};
+    const bool numbered = port.size() > 1 && port[0] == 'u' &&
+                          std::all_of(port.begin() + 1, port.end(), [](char c) { return c >= '0' && c <= '9'; });
+    if (numbered) return {declared.size(), port.size(), port};
+    return {declared.size() + 1, k, {}};
   };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return rank(a) < rank(b); });
   return order;
@@ -70,6 +76,7 @@ class ProgramBuilder {
     type_signals();
     for (const ProgramBlock& block : program_.blocks) check_types(program_, block, diagnostics);
     check_declarations(diagnostics);
+    if (!has_errors(diagnostics)) check_loops(diagnostics);
     if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
     lay_out_tasks();
     return {std::move(program_), std::move(diagnostics)};
@@ -81,7 +88,7 @@ class ProgramBuilder {
     for (std::size_t driver = 0; driver < flat_.nodes.size(); ++driver) {
       for (const std::string& output : flat_.nodes[driver].outputs) {
         ProgramSignal signal;
-        signal.name = output;
+        signal.name = flat_.outermost_name(output);
         signal.identifier = identifier_of(signal.name);
         signal.driver = driver;
         for (const SignalDeclaration& declaration : model_.signals) {
@@ -89,7 +96,7 @@ class ProgramBuilder {
           signal.unit = declaration.unit;
           signal.measurable = declaration.measurable;
         }
-        signal_of[signal.name] = program_.signals.size();
+        signal_of[output] = program_.signals.size();
         program_.signals.push_back(signal);
       }
     }
@@ -144,34 +151,95 @@ class ProgramBuilder {
     return argument;
   }
 
-  // Types flow from drivers to readers until nothing changes; a signal no rule reaches (a loop of blocks that
-  // all inherit their type) is a double.
+  // Types flow from drivers to readers until nothing changes. In a loop where every block waits for another, the
+  // signals the model declares seed it; then blocks whose output type does not depend on their input's guess it is a
+  // scalar (typing.hpp); a signal no rule reaches is a double. check_loops() checks what seeds and guesses gave.
   void type_signals() {
-    std::vector<std::optional<SignalType>> known(program_.signals.size());
+    known_.assign(program_.signals.size(), std::nullopt);
     bool guess_scalars = false;
     for (bool changed = true; changed;) {
       changed = false;
       for (const ProgramBlock& block : program_.blocks) {
-        KnownTypes inputs;
-        for (const std::size_t input : block.inputs) inputs.push_back(known[input]);
-        const KnownTypes outputs = infer_outputs(program_, block, inputs, guess_scalars);
+        const KnownTypes outputs = infer_outputs(program_, block, known_inputs(block), guess_scalars);
         for (std::size_t k = 0; k < outputs.size(); ++k) {
-          if (outputs[k] && !known[block.outputs[k]]) {
-            known[block.outputs[k]] = outputs[k];
+          if (outputs[k] && !known_[block.outputs[k]]) {
+            known_[block.outputs[k]] = outputs[k];
             changed = true;
           }
         }
       }
-      if (!changed && !guess_scalars) {  // stuck in a loop: guess once, then go on
+      if (changed) {
+        guess_scalars = false;
+      } else if (seed_declarations()) {
+        changed = true;
+      } else if (!guess_scalars) {
         guess_scalars = true;
         changed = true;
-      } else if (changed) {
-        guess_scalars = false;
       }
     }
-    for (std::size_t index = 0; index < known.size(); ++index) {
-      program_.signals[index].type = known[index].value_or(SignalType{});
+    for (std::size_t index = 0; index < known_.size(); ++index) {
+      program_.signals[index].type = known_[index].value_or(SignalType{});
     }
+  }
+
+  [[nodiscard]] KnownTypes known_inputs(const ProgramBlock& block) const {
+    KnownTypes inputs;
+    for (const std::size_t input : block.inputs) inputs.push_back(known_[input]);
+    return inputs;
+  }
+
+  // Gives the declared signals that nothing has typed yet their declared type; whether there were any.
+  bool seed_declarations() {
+    bool seeded = false;
+    for (const SignalDeclaration& declaration : model_.signals) {
+      const auto index = program_.find_signal(declaration.name);
+      if (!index || known_[*index] || !declaration.type) continue;
+      known_[*index] = SignalType{*declaration.type, declaration.shape};
+      seeded = true;
+    }
+    return seeded;
+  }
+
+  // Every block's outputs must be what its inputs make of them, also where a loop was seeded or guessed before its
+  // inputs were known.
+  void check_loops(std::vector<Diagnostic>& diagnostics) const {
+    for (const ProgramBlock& block : program_.blocks) {
+      KnownTypes inputs;
+      for (const std::size_t input : block.inputs) inputs.push_back(program_.signals[input].type);
+      const KnownTypes outputs = infer_outputs(program_, block, inputs, false);
+      for (std::size_t k = 0; k < outputs.size(); ++k) {
+        const ProgramSignal& signal = program_.signals[block.outputs[k]];
+        if (!outputs[k] || *outputs[k] == signal.type) continue;
+        const auto declared = std::find_if(model_.signals.begin(), model_.signals.end(),
+                                           [&signal](const SignalDeclaration& d) { return d.name == signal.name; });
+        if (declared != model_.signals.end() && declared->type) {
+          diagnostics.push_back({Diagnostic::Severity::error, declared->location,
+                                 "type mismatch: signal '" + signal.name + "' is declared " + describe(signal.type) +
+                                     " but block '" + block.path + "' (" + block.type() + ") drives it with " +
+                                     describe(*outputs[k]),
+                                 "declare it as " + describe(*outputs[k]) + ", or convert it with a Convert block"});
+        } else {
+          diagnostics.push_back(
+              {Diagnostic::Severity::error, block.block->outputs[k].location,
+               "type mismatch: block '" + block.path + "' (" + block.type() + ") drives signal '" + signal.name +
+                   "' with " + describe(*outputs[k]) + ", but the loop it is in was taken for " +
+                   describe(signal.type) + " before its inputs were known",
+               "a loop gives each signal one type and size all the way round; if this one does, declare it: "
+               "signals: {" +
+                   signal.name + ": " + declaration_of(*outputs[k]) + "}"});
+        }
+        return;  // one is enough: the rest of the loop follows from it
+      }
+    }
+  }
+
+  static std::string declaration_of(const SignalType& type) {
+    std::string text = "{type: " + std::string{type_name(type.type)};
+    if (type.shape.size() == 1) text += ", size: " + std::to_string(type.shape[0]);
+    if (type.shape.size() == 2) {
+      text += ", size: [" + std::to_string(type.shape[0]) + ", " + std::to_string(type.shape[1]) + "]";
+    }
+    return text + "}";
   }
 
   // Declared types must be what the driver produces; no conversion is silent.
@@ -238,6 +306,7 @@ class ProgramBuilder {
   FlatModel flat_;
   RateAnalysis rates_;
   Program program_;
+  std::vector<std::optional<SignalType>> known_;  // while typing the signals
 };
 
 }  // namespace

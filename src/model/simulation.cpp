@@ -4,11 +4,13 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <string_view>
 
 #include "duet/host/lock_step_port.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
 #include "duet/rt/executive.hpp"
+#include "duet/support/closest_word.hpp"
 
 namespace duet::model {
 namespace {
@@ -37,11 +39,23 @@ struct Column {
   std::size_t element;
 };
 
+// For a name the model does not have: the nearest one, or the names there are (a few).
+std::string signal_hint(const Program& program, const std::string& name) {
+  std::vector<std::string_view> names;
+  for (const ProgramSignal& signal : program.signals) names.emplace_back(signal.name);
+  if (const auto closest = closest_word(name, names)) return "did you mean '" + std::string{*closest} + "'?";
+  constexpr std::size_t listed = 8;
+  std::string text = "its signals: ";
+  for (std::size_t k = 0; k < names.size() && k < listed; ++k) text += (k == 0 ? "" : ", ") + std::string{names[k]};
+  if (names.size() > listed) text += ", ... (" + std::to_string(names.size()) + " in all)";
+  return text;
+}
+
 Result<std::vector<std::size_t>> recorded_signals(const Program& program, const SimulationOptions& options) {
   std::vector<std::size_t> chosen;
   for (const std::string& name : options.signals) {
     const auto index = program.find_signal(name);
-    if (!index) return Failure{"the model has no signal '" + name + "'"};
+    if (!index) return Failure{"the model has no signal '" + name + "' (" + signal_hint(program, name) + ")"};
     chosen.push_back(*index);
   }
   if (!chosen.empty()) return chosen;
@@ -58,7 +72,8 @@ Result<std::vector<std::size_t>> recorded_signals(const Program& program, const 
 Result<TaskPriorities> task_priorities(const Program& program) {
   int least_urgent_interrupt = 0;
   for (const ProgramTask& task : program.tasks) {
-    if (task.rate.kind == Rate::Kind::interrupt) least_urgent_interrupt = std::max(least_urgent_interrupt, task.priority.value_or(0));
+    if (task.rate.kind == Rate::Kind::interrupt)
+      least_urgent_interrupt = std::max(least_urgent_interrupt, task.priority.value_or(0));
   }
   TaskPriorities result;
   int next_rate_group = least_urgent_interrupt + 1;
@@ -101,11 +116,12 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
     tasks.push_back({.name = "rate 1", .priority = {1, 0}, .entry = nothing});
   }
   const double base_period_s = program.model->base_period_us * 1e-6;
-  const rt::ModelDescription description{.name = program.model->name,
-                                         .base_period_ns = static_cast<std::uint32_t>(std::llround(base_period_s * 1e9)),
-                                         .tasks = tasks,
-                                         .initialize = nothing,
-                                         .terminate = nothing};
+  const rt::ModelDescription description{
+      .name = program.model->name,
+      .base_period_ns = static_cast<std::uint32_t>(std::llround(base_period_s * 1e9)),
+      .tasks = tasks,
+      .initialize = nothing,
+      .terminate = nothing};
   host::LockStepPort port{description};
   rt::Executive<host::LockStepPort, max_tasks> executive{description, port};
   port.attach(executive);
@@ -140,6 +156,7 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
   };
   for (std::uint64_t tick = 0; tick < ticks; ++tick) {
     const double now = static_cast<double>(tick) * base_period_s;
+    if (options.before_tick) options.before_tick(tick, interpreter);
     plant.advance(now, raise);
     port.advance(1);
     result.recording.time_s.push_back(now);

@@ -1,9 +1,13 @@
 #include "typing.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <set>
+#include <string_view>
 
+#include "block_semantics.hpp"
 #include "duet/model/data_type.hpp"
+#include "duet/support/closest_word.hpp"
 
 namespace duet::model {
 namespace {
@@ -63,7 +67,8 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
   if (outputs.empty()) return outputs;
   const std::string& type = block.type();
   std::optional<SignalType>& y = outputs[0];
-  const auto shape_of = [guess_scalars](const std::optional<SignalType>& input) -> std::optional<std::vector<std::size_t>> {
+  const auto shape_of =
+      [guess_scalars](const std::optional<SignalType>& input) -> std::optional<std::vector<std::size_t>> {
     if (input) return input->shape;
     if (guess_scalars) return std::vector<std::size_t>{};
     return std::nullopt;
@@ -121,154 +126,296 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
   // Demux and InputCapture name outputs by port: keep each output's type on the port it belongs to.
   if (type == "InputCapture") {
     for (std::size_t k = 0; k < outputs.size(); ++k) {
-      outputs[k] = block.output_ports[k] == "edge" ? SignalType{DataType::boolean, {}} : SignalType{DataType::uint32, {}};
+      outputs[k] =
+          block.output_ports[k] == "edge" ? SignalType{DataType::boolean, {}} : SignalType{DataType::uint32, {}};
     }
   }
   return outputs;
 }
 
-void check_types(const Program& program, const ProgramBlock& block, std::vector<Diagnostic>& diagnostics) {
-  const std::string& type = block.type();
-  const auto input_type = [&](std::size_t k) { return program.signals[block.inputs[k]].type; };
-  const auto error = [&](Location where, const std::string& message, const std::string& hint) {
-    diagnostics.push_back({Diagnostic::Severity::error, where, message, hint});
-  };
-  const std::string name = "block '" + block.path + "' (" + type + ")";
-  const auto input_location = [&](std::size_t k) {
-    for (const Connection& connection : block.block->inputs) {
-      if (connection.port == block.input_ports[k]) return connection.location;
+namespace {
+
+// One block's checks. Each names the block, the port or parameter, what it is and what it should be.
+class BlockCheck {
+ public:
+  BlockCheck(const Program& program, const ProgramBlock& block, std::vector<Diagnostic>& diagnostics)
+      : program_(program),
+        block_(block),
+        diagnostics_(diagnostics),
+        name_("block '" + block.path + "' (" + block.type() + ")") {}
+
+  void run() {
+    const std::size_t before = diagnostics_.size();
+    words();
+    if (block_.block->code) {
+      code_inputs();
+      return;
     }
-    return block.block->location;
-  };
-  // Inputs that must agree with each other.
-  const auto same = [&](std::initializer_list<std::size_t> ports, bool shapes) {
-    std::optional<std::size_t> first;
-    for (const std::size_t k : ports) {
-      if (k >= block.inputs.size()) continue;
-      if (!first) {
-        first = k;
-        continue;
+    inputs();
+    // Parameters mean something only once the block's own types are right.
+    if (diagnostics_.size() == before) parameters();
+  }
+
+ private:
+  void error(Location where, const std::string& message, const std::string& hint) {
+    diagnostics_.push_back({Diagnostic::Severity::error, where, message, hint});
+  }
+
+  [[nodiscard]] const SignalType& input_type(std::size_t k) const { return program_.signals[block_.inputs[k]].type; }
+  [[nodiscard]] std::string input(std::size_t k) const {
+    return "input '" + block_.input_ports[k] + "' (signal '" + program_.signals[block_.inputs[k]].name + "')";
+  }
+  [[nodiscard]] Location input_location(std::size_t k) const {
+    for (const Connection& connection : block_.block->inputs) {
+      if (connection.port == block_.input_ports[k]) return connection.location;
+    }
+    return block_.block->location;
+  }
+  [[nodiscard]] Location output_location(std::size_t k) const {
+    for (const Connection& connection : block_.block->outputs) {
+      if (connection.port == block_.output_ports[k]) return connection.location;
+    }
+    return block_.block->location;
+  }
+  [[nodiscard]] bool is(std::initializer_list<const char*> types) const {
+    return std::any_of(types.begin(), types.end(), [this](const char* type) { return block_.type() == type; });
+  }
+
+  // Parameters that are words: a data type, an operator, a mode, signs.
+  void words() {
+    const Argument* type = block_.argument("type");
+    if (type != nullptr && is({"Constant", "Convert", "Counter"}) && !word_type(block_)) {
+      constexpr std::string_view types[] = {"double", "single", "int8",   "int16",  "int32",
+                                            "uint8",  "uint16", "uint32", "boolean"};
+      const auto closest = closest_word(type->text, types);
+      error(type->location, "parameter 'type' of " + name_ + " is '" + type->text + "', which is not a data type",
+            closest ? "did you mean '" + std::string{*closest} + "'?"
+                    : "double, single, int8, int16, int32, uint8, uint16, uint32 or boolean");
+    }
+    const Argument* op = block_.argument("operator");
+    if (op != nullptr && block_.type() == "Compare" && !parse_compare_operator(op->text)) {
+      error(op->location, name_ + " has no operator '" + op->text + "'", "its operators: <, <=, ==, !=, >= and >");
+    }
+    if (op != nullptr && block_.type() == "Logic" && !parse_logic_operator(op->text)) {
+      std::string capitals = op->text;
+      for (char& c : capitals) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      error(op->location, name_ + " has no operator '" + op->text + "'",
+            parse_logic_operator(capitals) ? "did you mean '" + capitals + "'?"
+                                           : "its operators: AND, OR, XOR, NAND and NOR");
+    }
+    const Argument* mode = block_.argument("mode");
+    if (mode != nullptr && block_.type() == "RateTransition" && mode->text != "deterministic" &&
+        mode->text != "latest") {
+      error(mode->location, name_ + " has no mode '" + mode->text + "'",
+            "its modes: deterministic, between periodic rates, and latest, with an interrupt task");
+    }
+    const Argument* signs = block_.argument("signs");
+    if (signs != nullptr && block_.type() == "Sum") {
+      std::string given = signs->text;
+      given.erase(std::remove(given.begin(), given.end(), '|'), given.end());
+      if (given.find_first_not_of("+-") != std::string::npos) {
+        error(signs->location, "signs '" + signs->text + "' of " + name_ + " are not all + or -",
+              "one + or - per input, u1 first: '+-' is u1 - u2");
+      } else if (given.size() != block_.inputs.size()) {
+        error(signs->location,
+              "signs '" + signs->text + "' of " + name_ + " give " + std::to_string(given.size()) + " signs for " +
+                  std::to_string(block_.inputs.size()) + " inputs",
+              "one + or - per input, u1 first");
       }
-      const SignalType a = input_type(*first);
-      const SignalType b = input_type(k);
-      if (a.type != b.type || (shapes && a.shape != b.shape)) {
-        const bool sizes = a.type == b.type;
+    }
+  }
+
+  // Inputs that must agree with each other in type, and in size where `shapes`.
+  void same(const std::vector<std::size_t>& ports, bool types, bool shapes) {
+    for (std::size_t n = 1; n < ports.size(); ++n) {
+      const std::size_t first = ports[0];
+      const std::size_t k = ports[n];
+      if (k >= block_.inputs.size()) continue;
+      const SignalType& a = input_type(first);
+      const SignalType& b = input_type(k);
+      if (types && a.type != b.type) {
         error(input_location(k),
-              std::string{sizes ? "size" : "type"} + " mismatch: input '" + block.input_ports[k] + "' of " + name +
-                  " is " + describe(b) + ", input '" + block.input_ports[*first] + "' is " + describe(a),
-              sizes ? "the inputs of this block have one size" : "convert one of them with a Convert block");
+              "type mismatch: " + input(k) + " of " + name_ + " is " + describe(b) + ", but " + input(first) + " is " +
+                  describe(a),
+              "convert one of them with a Convert block");
+        return;
+      }
+      if (shapes && a.shape != b.shape) {
+        error(input_location(k),
+              "size mismatch: " + input(k) + " of " + name_ + " is " + describe(b) + ", but " + input(first) + " is " +
+                  describe(a),
+              "a " + block_.type() + " works element by element on inputs of one size");
         return;
       }
     }
-  };
-  std::vector<std::size_t> all(block.inputs.size());
-  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  const auto same_all = [&](bool shapes) {
-    std::optional<std::size_t> first;
-    for (const std::size_t k : all) {
-      if (!first) {
-        first = k;
-      } else if (input_type(*first).type != input_type(k).type ||
-                 (shapes && input_type(*first).shape != input_type(k).shape)) {
-        same({*first, k}, shapes);
-        return;
+  }
+
+  void inputs() {
+    std::vector<std::size_t> all(block_.inputs.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+    if (block_.inputs.empty()) {
+      if (block_.type() == "Counter" && !block_.outputs.empty() &&
+          program_.signals[block_.outputs[0]].type.type == DataType::boolean) {
+        error(block_.argument("type")->location, "type mismatch: " + name_ + " cannot count in boolean",
+              "give it an integer type, or leave out 'type' for uint32");
       }
+      return;
     }
-  };
-  const bool floating_only = type == "DiscreteIntegrator" || type == "DiscreteDerivative" || type == "DiscretePid" ||
-                             type == "Atan2" || type == "PwmOut";
-  if (floating_only && !block.inputs.empty() && !is_floating(input_type(0).type)) {
-    error(input_location(0),
-          "type mismatch: " + name + " computes in floating point, but input '" + block.input_ports[0] + "' is " +
-              describe(input_type(0)),
+    if (is({"DiscreteIntegrator", "DiscreteDerivative", "DiscretePid", "Atan2", "PwmOut"}) &&
+        !is_floating(input_type(0).type)) {
+      error(
+          input_location(0),
+          "type mismatch: " + name_ + " computes in floating point, but " + input(0) + " is " + describe(input_type(0)),
           "convert it to single or double with a Convert block");
-  }
-  if ((type == "Abs" || type == "Gain" || type == "Sum" || type == "Product") && !block.inputs.empty() &&
-      input_type(0).type == DataType::boolean) {
-    error(input_location(0), "type mismatch: " + name + " does arithmetic, but its input is boolean",
-          "convert it to a number with a Convert block");
-  }
-  if (type == "Sum" || type == "Product" || type == "RateTransition") same_all(true);
-  if (type == "Mux" || type == "MatrixMultiply") same_all(false);
-  if (type == "Switch") same({0, 2}, true);
-  if (type == "Atan2") same({0, 1}, true);
-  if (type == "MatrixMultiply" && block.inputs.size() == 2) {
-    const SignalType a = input_type(0);
-    const SignalType b = input_type(1);
-    const std::size_t inner = a.shape.size() == 2 ? a.shape[1] : 1;
-    const std::size_t b_rows = b.shape.empty() ? 1 : b.shape[0];
-    if (inner != b_rows) {
-      error(input_location(1), "size mismatch: " + name + " multiplies " + describe(a) + " by " + describe(b),
-            "the columns of a must equal the rows of b");
+      return;
+    }
+    if (is({"Abs", "Gain", "Sum", "Product", "Saturation", "MatrixMultiply"}) &&
+        input_type(0).type == DataType::boolean) {
+      error(input_location(0), "type mismatch: " + name_ + " does arithmetic, but " + input(0) + " is boolean",
+            "convert it to a number with a Convert block");
+      return;
+    }
+    if (is({"Sum", "Product", "Atan2"})) same(all, true, true);
+    if (is({"Mux", "MatrixMultiply"})) same(all, true, false);
+    if (block_.type() == "Logic") same(all, false, true);
+    if (block_.type() == "Switch") {
+      same({0, 2}, true, true);
+      const SignalType& condition = input_type(1);
+      if (!condition.shape.empty() && condition.shape != input_type(0).shape) {
+        error(input_location(1),
+              "size mismatch: " + input(1) + " of " + name_ + " is " + describe(condition) + ", but " + input(0) +
+                  " is " + describe(input_type(0)),
+              "give one condition, or one per element");
+      }
+    }
+    if (is({"Selector", "Lookup"})) {
+      const std::size_t index = block_.type() == "Selector" ? 1 : 0;
+      if (!input_type(index).shape.empty()) {
+        error(input_location(index),
+              "size mismatch: " + input(index) + " of " + name_ + " is " + describe(input_type(index)),
+              "a " + block_.type() + " takes one index, a scalar");
+      }
+    }
+    if (block_.type() == "MatrixMultiply" && block_.inputs.size() == 2) {
+      const SignalType& a = input_type(0);
+      const SignalType& b = input_type(1);
+      const std::size_t inner = a.shape.size() == 2 ? a.shape[1] : 1;
+      const std::size_t b_rows = b.shape.empty() ? 1 : b.shape[0];
+      if (inner != b_rows) {
+        error(input_location(1), "size mismatch: " + name_ + " multiplies " + describe(a) + " by " + describe(b),
+              "the columns of a must equal the rows of b; a vector is a column");
+      }
+    }
+    if (block_.type() == "GpioOut" && input_type(0) != SignalType{DataType::boolean, {}}) {
+      error(input_location(0),
+            "type mismatch: " + name_ + " writes a boolean, but " + input(0) + " is " + describe(input_type(0)),
+            "compare the value (Compare) or convert it to boolean");
+    }
+    if (block_.type() == "Demux") {
+      const std::size_t elements = input_type(0).elements();
+      for (std::size_t k = 0; k < block_.outputs.size(); ++k) {
+        if (demux_element(block_.output_ports[k]) < elements) continue;
+        error(output_location(k),
+              "size mismatch: output '" + block_.output_ports[k] + "' of " + name_ + " is element " +
+                  std::to_string(demux_element(block_.output_ports[k]) + 1) + " of " + input(0) + ", which is " +
+                  describe(input_type(0)),
+              "output yN carries element N: connect y1 to y" + std::to_string(elements) + " only");
+        break;
+      }
     }
   }
-  if (type == "GpioOut" && !block.inputs.empty() && input_type(0) != SignalType{DataType::boolean, {}}) {
-    error(input_location(0), "type mismatch: " + name + " writes a boolean, but its input is " + describe(input_type(0)),
-          "compare the value (Compare) or convert it to boolean");
-  }
-  if (type == "Demux" && !block.inputs.empty() && block.outputs.size() > input_type(0).elements()) {
-    error(block.block->location,
-          "size mismatch: " + name + " has " + std::to_string(block.outputs.size()) + " outputs but its input has " +
-              std::to_string(input_type(0).elements()) + " elements",
-          "connect at most one output per element");
-  }
+
   // A Code block's inputs are declared: the signals must be what the function takes.
-  if (block.block->code) {
-    for (std::size_t k = 0; k < block.inputs.size(); ++k) {
-      const Connection& port = block.block->inputs[k];
-      const SignalType declared{port.type.value_or(DataType::float64), port.shape};
-      if (input_type(k) != declared) {
+  void code_inputs() {
+    for (std::size_t k = 0; k < block_.inputs.size(); ++k) {
+      for (const Connection& port : block_.block->inputs) {
+        if (port.port != block_.input_ports[k]) continue;
+        const SignalType declared{port.type.value_or(DataType::float64), port.shape};
+        if (input_type(k) == declared) continue;
         error(port.location,
-              "type mismatch: input '" + port.port + "' of " + name + " is declared " + describe(declared) +
+              "type mismatch: input '" + port.port + "' of " + name_ + " is declared " + describe(declared) +
                   " but signal '" + port.signal + "' is " + describe(input_type(k)),
               "declare the port as the signal is, or convert the signal");
       }
     }
   }
-  // Parameters: a tunable one must be of the block's type and either a scalar or of the input's size; a literal
-  // must be a value of the block's type.
-  static const std::set<std::string> numeric{"k",     "lower", "upper", "gain",  "initial", "p",    "i",
-                                             "d",     "n",     "value", "limit", "table"};
-  if (block.block->code || type == "Constant" || block.outputs.empty()) return;
-  const SignalType working = program.signals[block.outputs[0]].type;
-  for (const auto& [parameter_name, argument] : block.arguments) {
-    if (numeric.count(parameter_name) == 0 || argument.kind == Argument::Kind::word) continue;
-    if (type == "Lookup") continue;  // the table gives the output its type
-    // A Compare compares in its input's type; every other block computes in its output's.
-    const DataType expected = type == "Compare" && !block.inputs.empty() ? input_type(0).type : working.type;
-    if (argument.kind == Argument::Kind::parameter) {
-      const Parameter& parameter = program.parameter(argument);
-      const SignalType given{parameter.type, parameter.value.shape};
-      if (given.type != expected) {
+
+  // Why the block's parameters take the type they must: for the hint of a value that does not fit.
+  [[nodiscard]] std::string computes_in(DataType expected) const {
+    const std::string type{type_name(expected)};
+    if (block_.type() == "Counter") return "a Counter counts in its type, " + type + " (uint32 unless given)";
+    if (block_.type() == "Constant") return "the Constant's type is " + type;
+    if (block_.type() == "Compare") return "a Compare compares in its input's type, " + type;
+    return "the block computes in its input's type, " + type;
+  }
+
+  // A tunable parameter must be of the block's type and either a scalar or of the signal's size; a literal must be
+  // a value of the block's type.
+  void parameters() {
+    static const std::set<std::string> numeric{"k", "lower", "upper", "gain",  "initial", "p",
+                                               "i", "d",     "n",     "value", "limit",   "table"};
+    if (block_.outputs.empty() || block_.type() == "Lookup") return;  // a Lookup's table gives it its type
+    const SignalType& working = program_.signals[block_.outputs[0]].type;
+    for (const auto& [parameter_name, argument] : block_.arguments) {
+      if (numeric.count(parameter_name) == 0 || argument.kind == Argument::Kind::word) continue;
+      // A Compare compares in its input's type; every other block computes in its output's.
+      const DataType expected = block_.type() == "Compare" ? input_type(0).type : working.type;
+      const SignalType on = block_.type() == "Compare" ? input_type(0) : working;
+      if (argument.kind == Argument::Kind::parameter) {
+        const Parameter& parameter = program_.parameter(argument);
+        const SignalType given{parameter.type, parameter.value.shape};
+        if (block_.type() == "Constant") {
+          if (word_type(block_) && *word_type(block_) != parameter.type) {
+            error(argument.location,
+                  "type mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name_ +
+                      " has type: " + std::string{type_name(*word_type(block_))},
+                  "declare '" + parameter.name + "' with type: " + std::string{type_name(*word_type(block_))} +
+                      ", or leave out the Constant's type");
+          }
+        } else if (given.type != expected) {
+          error(argument.location,
+                "type mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name_ +
+                    " computes in " + std::string{type_name(expected)},
+                "declare '" + parameter.name + "' with type: " + std::string{type_name(expected)});
+        } else if (!given.shape.empty() && given.elements() != on.elements()) {
+          error(argument.location,
+                "size mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name_ +
+                    " computes on " + describe(on),
+                "give a scalar, or one value per element");
+        }
+        continue;
+      }
+      for (const double element : argument.value.elements) {
+        if (!fits(element, expected)) {
+          error(argument.location,
+                "type mismatch: parameter '" + parameter_name + "' of " + name_ + " is " + format_number(element) +
+                    ", which is not a value of " + std::string{type_name(expected)},
+                computes_in(expected) + ": give a value of that type" +
+                    (block_.inputs.empty() ? std::string{", or another type"} : ", or convert the input"));
+          break;
+        }
+      }
+      if (block_.type() != "Constant" && !argument.value.shape.empty() &&
+          argument.value.elements.size() != on.elements()) {
         error(argument.location,
-              "type mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name +
-                  " computes in " + std::string{type_name(expected)},
-              "declare '" + parameter.name + "' with type: " + std::string{type_name(expected)});
-      } else if (!given.shape.empty() && given.elements() != working.elements()) {
-        error(argument.location,
-              "size mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name +
-                  " computes on " + describe(working),
+              "size mismatch: parameter '" + parameter_name + "' of " + name_ + " has " +
+                  std::to_string(argument.value.elements.size()) + " elements but the block computes on " +
+                  describe(on),
               "give a scalar, or one value per element");
       }
-      continue;
-    }
-    for (const double element : argument.value.elements) {
-      if (!fits(element, expected)) {
-        error(argument.location,
-              "type mismatch: " + format_number(element) + " (parameter '" + parameter_name + "' of " + name +
-                  ") is not a value of " + std::string{type_name(expected)},
-              "the block computes in its input's type");
-        break;
-      }
-    }
-    if (!argument.value.shape.empty() && argument.value.elements.size() != working.elements()) {
-      error(argument.location,
-            "size mismatch: parameter '" + parameter_name + "' of " + name + " has " +
-                std::to_string(argument.value.elements.size()) + " elements but the block computes on " +
-                describe(working),
-            "give a scalar, or one value per element");
     }
   }
+
+  const Program& program_;
+  const ProgramBlock& block_;
+  std::vector<Diagnostic>& diagnostics_;
+  std::string name_;
+};
+
+}  // namespace
+
+void check_types(const Program& program, const ProgramBlock& block, std::vector<Diagnostic>& diagnostics) {
+  BlockCheck{program, block, diagnostics}.run();
 }
 
 }  // namespace duet::model

@@ -97,8 +97,7 @@ class Validator {
       for (const auto& [name, parameter] : block.parameters) {
         if (parameter.reference.empty()) continue;
         used_.insert(parameter.reference);
-        if (std::find(names_.begin(), names_.end(), parameter.reference) == names_.end() &&
-            !is_word_parameter(name)) {
+        if (std::find(names_.begin(), names_.end(), parameter.reference) == names_.end() && !is_word_parameter(name)) {
           error(parameter.location,
                 "parameter '" + name + "' of block '" + block.name + "' names '" + parameter.reference +
                     "', which is neither a parameter nor a constant of the model",

@@ -61,7 +61,7 @@ const Case cases[] = {
      "  - {name: a, type: GpioOut, parameters: {pin: PA5}, inputs: {u: x}}\n",
      "m.yaml:6:5: error: two blocks are named 'a' (names are unique within a subsystem)\n"},
     {"unknown_parameter", "", "  - {name: c, type: Constant, parameters: {value: 1, gain: 2}, outputs: {y: x}}\n",
-     "m.yaml:5:60: error: block 'c' (Constant) has no parameter 'gain' (its parameters: value)\n"},
+     "m.yaml:5:60: error: block 'c' (Constant) has no parameter 'gain' (its parameters: value, type)\n"},
     {"missing_parameter", "", "  - {name: c, type: Constant, outputs: {y: x}}\n",
      "m.yaml:5:5: error: block 'c' (Constant) needs parameter 'value' (parameters: {value: VALUE})\n"},
     {"unknown_reference", "parameters:\n  Kp: 1\n",

@@ -33,10 +33,11 @@ consteval std::uint16_t interrupt_number(std::string_view name) {
   constexpr struct {
     std::string_view name;
     unsigned number;
-  } interrupts[] = {{"UART0_RX", mps2_an386::uart0_receive_interrupt}, {"UART0_TX", mps2_an386::uart0_transmit_interrupt},
-                    {"UART1_RX", mps2_an386::uart1_receive_interrupt}, {"UART1_TX", mps2_an386::uart1_transmit_interrupt},
-                    {"UART2_RX", mps2_an386::uart2_receive_interrupt}, {"UART2_TX", mps2_an386::uart2_transmit_interrupt},
-                    {"DUALTIMER", mps2_an386::dual_timer_interrupt}};
+  } interrupts[] = {
+      {"UART0_RX", mps2_an386::uart0_receive_interrupt}, {"UART0_TX", mps2_an386::uart0_transmit_interrupt},
+      {"UART1_RX", mps2_an386::uart1_receive_interrupt}, {"UART1_TX", mps2_an386::uart1_transmit_interrupt},
+      {"UART2_RX", mps2_an386::uart2_receive_interrupt}, {"UART2_TX", mps2_an386::uart2_transmit_interrupt},
+      {"DUALTIMER", mps2_an386::dual_timer_interrupt}};
   for (const auto& interrupt : interrupts) {
     if (interrupt.name == name) return static_cast<std::uint16_t>(interrupt.number);
   }

@@ -63,8 +63,8 @@ struct ProgramBlock {
   std::vector<std::size_t> outputs;
   std::vector<std::string> output_ports;
   std::map<std::string, Argument> arguments;
-  std::size_t task = 0;         // where its output phase runs; at_initialisation for constants
-  std::size_t update_task = 0;  // where its update phase runs (a RateTransition: the writer's task)
+  std::size_t task = 0;              // where its output phase runs; at_initialisation for constants
+  std::size_t update_task = 0;       // where its update phase runs (a RateTransition: the writer's task)
   std::vector<std::size_t> enables;  // boolean signals: it runs while all are true (enabled subsystems)
   double period_s = 0;               // its task's period (0 for interrupt tasks and constants)
 
@@ -84,7 +84,7 @@ struct Program {
   const Model* model = nullptr;
   std::vector<ProgramSignal> signals;
   std::vector<ProgramBlock> blocks;
-  std::vector<ProgramTask> tasks;  // periodic tasks fastest first, then interrupt tasks
+  std::vector<ProgramTask> tasks;            // periodic tasks fastest first, then interrupt tasks
   std::vector<std::size_t> initial_outputs;  // constant blocks, in execution order
 
   [[nodiscard]] const Parameter& parameter(const Argument& argument) const {

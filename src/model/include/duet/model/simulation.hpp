@@ -6,9 +6,11 @@
 // values, bit for bit.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "duet/model/interpreter.hpp"
 #include "duet/model/program.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/rt/task_table.hpp"
@@ -20,6 +22,8 @@ struct SimulationOptions {
   double duration_s = 1.0;
   // Signals to record by name; none: the measurable ones, or every signal if none is measurable.
   std::vector<std::string> signals;
+  // Called before each base tick, before the plant moves: where a test or a master tunes parameters.
+  std::function<void(std::uint64_t tick, Interpreter& model)> before_tick;
 };
 
 // One column per element of a recorded signal ("theta", or "x[0]", "x[1]" for a vector), one row per base tick:

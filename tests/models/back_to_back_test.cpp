@@ -1,0 +1,175 @@
+// Back to back: each example's generated code, built for the PC, computes bit for bit what duet sim's interpreter
+// computes from the model, tick by tick, with the same tuning at the same ticks and the same traffic to the plant.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <functional>
+#include <random>
+
+#include "duet/hardware/hardware.hpp"
+#include "duet/host/lock_step_port.hpp"
+#include "duet/model/generate.hpp"
+#include "duet/model/model_file.hpp"
+#include "duet/model/program.hpp"
+#include "duet/model/simulation.hpp"
+#include "duet/rt/executive.hpp"
+#include "duet/support/text_file.hpp"
+#include "duet/xcp/host/a2l.hpp"
+#include "examples.hpp"
+#include "step_time.hpp"
+#include "transfer_test.hpp"
+
+namespace duet::model {
+namespace {
+
+// Remembers every write, in order, and answers reads as the Loopback does.
+class LoggingPlant : public plant::Loopback {
+ public:
+  void write(std::string_view resource, std::span<const double> values) override {
+    log.emplace_back(std::string{resource}, std::vector<double>(values.begin(), values.end()));
+    Loopback::write(resource, values);
+  }
+  std::vector<std::pair<std::string, std::vector<double>>> log;
+};
+
+struct Example {
+  std::string name;
+  const rt::ModelDescription& description;
+  const void* signals;  // the generated Signals structure
+  std::uint64_t ticks;
+  std::function<void(std::uint64_t tick, Interpreter& model)> tune_interpreted;
+  std::function<void(std::uint64_t tick)> tune_generated;
+};
+
+double decode(xcp::host::DataType type, const std::byte* at) {
+  const auto read = [at]<typename T>(T) {
+    T value;
+    std::memcpy(&value, at, sizeof(T));
+    return static_cast<double>(value);
+  };
+  switch (type) {
+    case xcp::host::DataType::uint8: return read(std::uint8_t{});
+    case xcp::host::DataType::int8: return read(std::int8_t{});
+    case xcp::host::DataType::uint16: return read(std::uint16_t{});
+    case xcp::host::DataType::int16: return read(std::int16_t{});
+    case xcp::host::DataType::uint32: return read(std::uint32_t{});
+    case xcp::host::DataType::int32: return read(std::int32_t{});
+    case xcp::host::DataType::float32: return read(float{});
+    case xcp::host::DataType::float64: return read(double{});
+    default: return 0;
+  }
+}
+
+// The generated model on the executive in lock-step, its measurements read where its A2L says they are.
+Recording run_generated(const Example& example, LoggingPlant& plant) {
+  auto a2l_text = read_text_file(generated_folder(example.name) + "/" + example.name + ".a2l");
+  EXPECT_TRUE(a2l_text.ok());
+  auto a2l = xcp::host::read_a2l(a2l_text.value());
+  EXPECT_TRUE(a2l.ok()) << a2l.error();
+  Recording recording;
+  for (const xcp::host::Variable& measurement : a2l.value().measurements) {
+    for (std::uint32_t element = 0; element < measurement.count; ++element) {
+      std::string name = measurement.name;
+      std::replace(name.begin(), name.end(), '.', '/');
+      recording.names.push_back(measurement.count == 1 ? name : name + "[" + std::to_string(element) + "]");
+    }
+  }
+  recording.columns.resize(recording.names.size());
+  hardware::connect(&plant);
+  host::LockStepPort port{example.description};
+  rt::Executive<host::LockStepPort, 16> executive{example.description, port};
+  port.attach(executive);
+  EXPECT_EQ(executive.initialize(), rt::TaskTableError::none);
+  EXPECT_TRUE(executive.begin());
+  const double period_s = example.description.base_period_ns * 1e-9;
+  for (std::uint64_t tick = 0; tick < example.ticks; ++tick) {
+    if (example.tune_generated) example.tune_generated(tick);
+    plant.advance(static_cast<double>(tick) * period_s, [](std::string_view) {});
+    port.advance(1);
+    recording.time_s.push_back(static_cast<double>(tick) * period_s);
+    std::size_t column = 0;
+    for (const xcp::host::Variable& measurement : a2l.value().measurements) {
+      const auto* base = static_cast<const std::byte*>(example.signals) + (measurement.address - signals_xcp_address);
+      for (std::uint32_t element = 0; element < measurement.count; ++element) {
+        recording.columns[column++].push_back(
+            decode(measurement.type, base + element * xcp::host::size_of(measurement.type)));
+      }
+    }
+  }
+  executive.end();
+  hardware::connect(nullptr);
+  return recording;
+}
+
+std::vector<Example> examples() {
+  std::vector<std::uint16_t> table(4096);
+  std::mt19937 random{2026};
+  for (std::uint16_t& value : table) value = static_cast<std::uint16_t>(random());
+  return {
+      {"step_time", step_time::description, &step_time::signals, 1000, {}, {}},
+      {"transfer_test", transfer_test::description, &transfer_test::signals, 5000,
+       // The master's part: the table, then play; at 3000 the reference page (not playing) for 500 ticks.
+       [table](std::uint64_t tick, Interpreter& model) {
+         if (tick == 7) {
+           for (std::size_t i = 0; i < table.size(); ++i) model.set_parameter(0, i, table[i]);
+           model.set_parameter(1, 0, 1);
+         }
+         if (tick == 3000) model.use_reference_page(true);
+         if (tick == 3500) model.use_reference_page(false);
+       },
+       [table](std::uint64_t tick) {
+         if (tick == 7) {
+           std::copy(table.begin(), table.end(), transfer_test::parameters.table);
+           transfer_test::parameters.playing = true;
+         }
+         if (tick == 3000)
+           transfer_test::parameter_page = reinterpret_cast<const std::uint8_t*>(&transfer_test::reference_parameters);
+         if (tick == 3500)
+           transfer_test::parameter_page = reinterpret_cast<const std::uint8_t*>(&transfer_test::parameters);
+       }},
+  };
+}
+
+class BackToBack : public testing::TestWithParam<std::size_t> {};
+
+TEST_P(BackToBack, GeneratedCodeComputesWhatTheInterpreterComputes) {
+  const Example example = examples()[GetParam()];
+  auto model = load_model(example_file(example.name));
+  ASSERT_TRUE(model.ok()) << model.error();
+  const ProgramBuild build = build_program(model.value());
+  ASSERT_TRUE(build.program.has_value());
+  LoggingPlant interpreted_plant;
+  SimulationOptions options;
+  options.duration_s = static_cast<double>(example.ticks - 1) * model.value().base_period_us * 1e-6;
+  options.before_tick = example.tune_interpreted;
+  auto simulated = simulate(*build.program, interpreted_plant, options);
+  ASSERT_TRUE(simulated.ok()) << simulated.error();
+  const Recording& expected = simulated.value().recording;
+
+  LoggingPlant generated_plant;
+  const Recording generated = run_generated(example, generated_plant);
+  ASSERT_EQ(generated.names, expected.names);
+  ASSERT_EQ(generated.time_s.size(), expected.time_s.size());
+  for (std::size_t column = 0; column < expected.columns.size(); ++column) {
+    for (std::size_t row = 0; row < expected.time_s.size(); ++row) {
+      const double a = expected.columns[column][row];
+      const double b = generated.columns[column][row];
+      ASSERT_EQ(std::memcmp(&a, &b, sizeof(double)), 0)
+          << expected.names[column] << " at tick " << row << ": interpreter " << a << ", generated " << b;
+    }
+  }
+  EXPECT_EQ(generated_plant.log, interpreted_plant.log);
+  // Something happened worth comparing: every example's measurements change over the run.
+  bool changes = false;
+  for (const auto& column : expected.columns)
+    changes = changes || std::adjacent_find(column.begin(), column.end(), std::not_equal_to<>{}) != column.end();
+  EXPECT_TRUE(changes);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, BackToBack, testing::Range<std::size_t>(0, 2),
+                         [](const testing::TestParamInfo<std::size_t>& parameter) {
+                           return examples()[parameter.param].name;
+                         });
+
+}  // namespace
+}  // namespace duet::model
