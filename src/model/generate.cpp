@@ -149,8 +149,12 @@ class FileWriter {
     text += "// points to (XCP's SET_CAL_PAGE switches it).\nstruct Parameters {\n" + members(parameters_) + "};\n\n";
     text += "// Signals that XCP measures or that outlive a step.\nstruct Signals {\n" + members(signals_) + "};\n\n";
     text += "// The blocks' state.\nstruct State {\n" + generator_.state_members() + "};\n\n";
-    text += "extern Parameters parameters;\nextern const Parameters reference_parameters;\n";
-    text += "extern const std::uint8_t* volatile parameter_page;\nextern Signals signals;\nextern State state;\n\n";
+    text += "extern Parameters parameters;\nextern const Parameters reference_parameters;\n\n";
+    text += "// What the steps write, in one object so that a step reaches all of it from one address.\n";
+    text += "struct Memory {\n  const std::uint8_t* volatile parameter_page;\n  Signals signals;\n  State state;\n};\n";
+    text += "extern Memory memory;\n";
+    text += "inline const std::uint8_t* volatile& parameter_page = memory.parameter_page;\n";
+    text += "inline Signals& signals = memory.signals;\ninline State& state = memory.state;\n\n";
     text += "// Resets the state, selects the working page and computes the constant blocks. Before the first step.\n";
     text += "void initialize();\nvoid terminate();\n";
     for (const ProgramTask& task : program_.tasks) {
@@ -208,7 +212,7 @@ class FileWriter {
       initial += "    ." + parameter.name + " = " + values(parameter) + ",\n";
     }
     text += "\nParameters parameters{\n" + initial + "};\nconst Parameters reference_parameters{\n" + initial + "};\n";
-    text += "const std::uint8_t* volatile parameter_page = nullptr;\nSignals signals{};\nState state{};\n\n";
+    text += "Memory memory{};\n\n";
     text += "namespace {\n\n" + generator_.block_constants();
     text += "\n// The page the steps read.\n[[maybe_unused]] const Parameters& parameters_in_use() {\n";
     text += "  return *std::launder(reinterpret_cast<const Parameters*>(parameter_page));\n}\n\n}  // namespace\n\n";

@@ -469,34 +469,26 @@ Compiled rate_transition(Compiler& c, const ProgramBlock& block) {
 Compiled hardware(Compiler& c, const ProgramBlock& block) {
   const std::string resource = hardware_resource(block);
   plant::Plant* plant = &c.plant();
-  if (!block.inputs.empty()) {
-    std::vector<std::function<double(std::size_t)>> inputs;
-    std::size_t count = 0;
-    for (std::size_t k = 0; k < block.inputs.size(); ++k) {
-      count += c.elements_in(block, k);
-      inputs.push_back(with_type(c.type_in(block, k), [&](auto tag) -> std::function<double(std::size_t)> {
-        using T = decltype(tag);
-        const Operand<T> u = c.input<T>(block, k);
-        return [u](std::size_t i) { return blocks::convert<double>(u[i]); };
-      }));
-    }
-    std::vector<std::size_t> counts;
-    for (std::size_t k = 0; k < block.inputs.size(); ++k) counts.push_back(c.elements_in(block, k));
-    auto values = std::make_shared<std::vector<double>>(count);
-    return {{[plant, resource, inputs, counts, values] {
-               std::size_t at = 0;
-               for (std::size_t k = 0; k < inputs.size(); ++k) {
-                 for (std::size_t i = 0; i < counts[k]; ++i) (*values)[at++] = inputs[k](i);
-               }
-               plant->write(resource, *values);
-             },
-             {}},
-            {}};
+  // What the block writes (its inputs, element by element) and then reads back (its outputs): an SpiDma does both.
+  std::vector<std::function<double(std::size_t)>> inputs;
+  std::vector<std::size_t> input_counts;
+  std::size_t written = 0;
+  for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+    input_counts.push_back(c.elements_in(block, k));
+    written += input_counts.back();
+    inputs.push_back(with_type(c.type_in(block, k), [&](auto tag) -> std::function<double(std::size_t)> {
+      using T = decltype(tag);
+      const Operand<T> u = c.input<T>(block, k);
+      return [u](std::size_t i) { return blocks::convert<double>(u[i]); };
+    }));
   }
   std::vector<std::function<void(const double*)>> outputs;
-  std::size_t count = 0;
+  std::vector<std::size_t> output_counts;
+  std::size_t read = 0;
   for (std::size_t k = 0; k < block.outputs.size(); ++k) {
     const std::size_t n = c.elements_out(block, k);
+    output_counts.push_back(n);
+    read += n;
     outputs.push_back(with_type(c.type_out(block, k), [&](auto tag) -> std::function<void(const double*)> {
       using T = decltype(tag);
       T* y = c.output<T>(block, k);
@@ -504,17 +496,24 @@ Compiled hardware(Compiler& c, const ProgramBlock& block) {
         for (std::size_t i = 0; i < n; ++i) y[i] = blocks::convert<T>(from[i]);
       };
     }));
-    count += n;
   }
-  std::vector<std::size_t> counts;
-  for (std::size_t k = 0; k < block.outputs.size(); ++k) counts.push_back(c.elements_out(block, k));
-  auto values = std::make_shared<std::vector<double>>(count);
-  return {{[plant, resource, outputs, counts, values] {
-             plant->read(resource, *values);
-             std::size_t at = 0;
-             for (std::size_t k = 0; k < outputs.size(); ++k) {
-               outputs[k](values->data() + at);
-               at += counts[k];
+  auto to_plant = std::make_shared<std::vector<double>>(written);
+  auto from_plant = std::make_shared<std::vector<double>>(read);
+  return {{[plant, resource, inputs, input_counts, to_plant, outputs, output_counts, from_plant] {
+             if (!inputs.empty()) {
+               std::size_t at = 0;
+               for (std::size_t k = 0; k < inputs.size(); ++k) {
+                 for (std::size_t i = 0; i < input_counts[k]; ++i) (*to_plant)[at++] = inputs[k](i);
+               }
+               plant->write(resource, *to_plant);
+             }
+             if (!outputs.empty()) {
+               plant->read(resource, *from_plant);
+               std::size_t at = 0;
+               for (std::size_t k = 0; k < outputs.size(); ++k) {
+                 outputs[k](from_plant->data() + at);
+                 at += output_counts[k];
+               }
              }
            },
            {}},

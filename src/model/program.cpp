@@ -76,9 +76,11 @@ class ProgramBuilder {
     type_signals();
     for (const ProgramBlock& block : program_.blocks) check_types(program_, block, diagnostics);
     check_declarations(diagnostics);
+    check_subsystems(model_.blocks, "", 0, diagnostics);
     if (!has_errors(diagnostics)) check_loops(diagnostics);
     if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
-    lay_out_tasks();
+    lay_out_tasks(diagnostics);
+    if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
     return {std::move(program_), std::move(diagnostics)};
   }
 
@@ -242,6 +244,38 @@ class ProgramBuilder {
     return text + "}";
   }
 
+  // An enabling signal is one boolean; edge triggers are not run yet, and must not run as if they were not there.
+  // `enables` counts the enabled subsystems around `blocks`.
+  void check_subsystems(const std::vector<Block>& blocks, const std::string& prefix, std::size_t enables,
+                        std::vector<Diagnostic>& diagnostics) const {
+    for (const Block& block : blocks) {
+      if (block.type != "Subsystem") continue;
+      const std::string path = prefix + block.name;
+      if (block.trigger.kind == Trigger::Kind::edge) {
+        diagnostics.push_back({Diagnostic::Severity::error, block.trigger.location,
+                               "subsystem '" + path + "' has an edge trigger, which simulation and generation do "
+                               "not run yet",
+                               "an enabled subsystem (enable: SIGNAL) or an interrupt trigger can stand in for now"});
+      }
+      const std::size_t inner = enables + (block.enable.empty() ? 0 : 1);
+      if (!block.enable.empty()) {
+        const auto member = std::find_if(program_.blocks.begin(), program_.blocks.end(), [&](const ProgramBlock& b) {
+          return b.path.rfind(path + "/", 0) == 0 && b.enables.size() >= inner;
+        });
+        if (member != program_.blocks.end()) {
+          const ProgramSignal& signal = program_.signals[member->enables[inner - 1]];
+          if (signal.type != SignalType{DataType::boolean, {}}) {
+            diagnostics.push_back({Diagnostic::Severity::error, block.location,
+                                   "type mismatch: subsystem '" + path + "' is enabled by signal '" + signal.name +
+                                       "', which is " + describe(signal.type),
+                                   "an enabling signal is one boolean: make it with a Compare block"});
+          }
+        }
+      }
+      check_subsystems(block.blocks, path + "/", inner, diagnostics);
+    }
+  }
+
   // Declared types must be what the driver produces; no conversion is silent.
   void check_declarations(std::vector<Diagnostic>& diagnostics) const {
     for (const SignalDeclaration& declaration : model_.signals) {
@@ -270,10 +304,13 @@ class ProgramBuilder {
     }
   }
 
-  void lay_out_tasks() {
+  void lay_out_tasks(std::vector<Diagnostic>& diagnostics) {
     std::map<std::string, std::size_t> block_of;
     for (std::size_t index = 0; index < program_.blocks.size(); ++index) block_of[program_.blocks[index].path] = index;
-    for (const Task& task : rates_.tasks) {
+    std::vector<Task> tasks = rates_.tasks;
+    std::vector<std::string> constants;
+    move_tunable_constants(block_of, tasks, constants);
+    for (const Task& task : tasks) {
       ProgramTask laid_out{task.name, task.rate, task.priority, {}, {}};
       const std::size_t task_index = program_.tasks.size();
       for (const std::string& path : task.blocks) {
@@ -283,23 +320,113 @@ class ProgramBuilder {
         block.period_s = task.rate.kind == Rate::Kind::periodic ? task.period_us * 1e-6 : 0.0;
         laid_out.outputs.push_back(block_of.at(path));
       }
+      order_enabled_blocks(laid_out.outputs);
       program_.tasks.push_back(std::move(laid_out));
     }
-    for (const std::string& path : rates_.constant_blocks) {
+    for (const std::string& path : constants) {
       program_.blocks[block_of.at(path)].task = at_initialisation;
       program_.blocks[block_of.at(path)].update_task = at_initialisation;
       program_.initial_outputs.push_back(block_of.at(path));
     }
     // A RateTransition takes its value in the task of what drives it.
     for (ProgramBlock& block : program_.blocks) {
-      if (block.type() == "RateTransition" && !block.inputs.empty()) {
-        block.update_task = program_.blocks[program_.signals[block.inputs[0]].driver].task;
+      if (block.type() != "RateTransition" || block.inputs.empty()) continue;
+      const std::size_t driver = program_.signals[block.inputs[0]].driver;
+      block.update_task = program_.blocks[driver].task;
+      if (block.update_task == at_initialisation) {  // it would never take the value
+        diagnostics.push_back({Diagnostic::Severity::error, block.block->location,
+                               "block '" + block.path + "' (RateTransition) reads signal '" +
+                                   program_.signals[block.inputs[0]].name + "' of block '" +
+                                   program_.blocks[driver].path + "', a constant",
+                               "every rate reads a constant directly: remove the RateTransition"});
       }
     }
     for (std::size_t index = 0; index < program_.blocks.size(); ++index) {
       const std::size_t task = program_.blocks[index].update_task;
       if (task != at_initialisation) program_.tasks[task].updates.push_back(index);
     }
+  }
+
+  // Constant blocks that read a tunable parameter, directly or through other constant blocks, must see it change
+  // like every other reader: they run first in the fastest periodic task (a base-rate task of their own if the model
+  // has none). The rest stay `constants`, computed once. A Constant naming the parameter is the parameter itself.
+  void move_tunable_constants(const std::map<std::string, std::size_t>& block_of, std::vector<Task>& tasks,
+                              std::vector<std::string>& constants) const {
+    std::set<std::size_t> tunable;  // signals
+    for (std::size_t index = 0; index < program_.signals.size(); ++index) {
+      if (program_.signals[index].parameter) tunable.insert(index);
+    }
+    std::vector<std::string> moved;
+    for (const std::string& path : rates_.constant_blocks) {  // in execution order: what a block reads comes first
+      const ProgramBlock& block = program_.blocks[block_of.at(path)];
+      const bool is_parameter = !block.outputs.empty() && program_.signals[block.outputs[0]].parameter;
+      const bool reads_parameter =
+          std::any_of(block.arguments.begin(), block.arguments.end(),
+                      [](const auto& entry) { return entry.second.kind == Argument::Kind::parameter; });
+      const bool reads_tunable = std::any_of(block.inputs.begin(), block.inputs.end(),
+                                             [&tunable](std::size_t input) { return tunable.count(input) != 0; });
+      if (is_parameter || !(reads_parameter || reads_tunable)) {
+        constants.push_back(path);
+        continue;
+      }
+      moved.push_back(path);
+      tunable.insert(block.outputs.begin(), block.outputs.end());
+    }
+    // The executive's task table starts with the base rate (duet/rt/task_table.hpp), even when no block runs there.
+    if (tasks.empty() || tasks.front().rate != Rate{Rate::Kind::periodic, 1, {}}) {
+      tasks.insert(tasks.begin(), Task{"rate 1", {Rate::Kind::periodic, 1, {}}, model_.base_period_us, {}, {}});
+    }
+    if (moved.empty()) return;
+    tasks.front().blocks.insert(tasks.front().blocks.begin(), moved.begin(), moved.end());
+  }
+
+  // A block of an enabled subsystem reads its enabling signal in both phases: that signal's driver runs before it
+  // when they share a task. Otherwise the task's order (rates.hpp) stands: a stable topological sort of the blocks
+  // by their direct-feedthrough inputs and their enables; blocks of a cycle keep their place at the end.
+  void order_enabled_blocks(std::vector<std::size_t>& outputs) const {
+    if (std::none_of(outputs.begin(), outputs.end(),
+                     [this](std::size_t block) { return !program_.blocks[block].enables.empty(); })) {
+      return;
+    }
+    std::map<std::size_t, std::size_t> position;  // block -> place in the task
+    for (std::size_t k = 0; k < outputs.size(); ++k) position[outputs[k]] = k;
+    std::vector<std::vector<std::size_t>> next(outputs.size());
+    std::vector<std::size_t> waiting(outputs.size(), 0);
+    const auto depends = [&](std::size_t reader, std::size_t signal) {
+      const auto driver = position.find(program_.signals[signal].driver);
+      if (driver == position.end() || driver->second == reader) return;
+      next[driver->second].push_back(reader);
+      ++waiting[reader];
+    };
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+      const ProgramBlock& block = program_.blocks[outputs[k]];
+      const BlockType* type = find_block_type(block.type());
+      const bool feedthrough = block.block->code ? block.block->code->direct_feedthrough
+                                                 : type == nullptr || type->direct_feedthrough;
+      if (feedthrough) {
+        for (const std::size_t input : block.inputs) depends(k, input);
+      }
+      for (const std::size_t enable : block.enables) depends(k, enable);
+    }
+    std::set<std::size_t> ready;
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+      if (waiting[k] == 0) ready.insert(k);
+    }
+    std::vector<std::size_t> order;
+    std::vector<bool> placed(outputs.size(), false);
+    while (!ready.empty()) {
+      const std::size_t k = *ready.begin();
+      ready.erase(ready.begin());
+      order.push_back(outputs[k]);
+      placed[k] = true;
+      for (const std::size_t reader : next[k]) {
+        if (--waiting[reader] == 0) ready.insert(reader);
+      }
+    }
+    for (std::size_t k = 0; k < outputs.size(); ++k) {
+      if (!placed[k]) order.push_back(outputs[k]);
+    }
+    outputs = std::move(order);
   }
 
   const Model& model_;

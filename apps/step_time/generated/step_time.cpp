@@ -24,9 +24,7 @@ Parameters parameters{
 };
 const Parameters reference_parameters{
 };
-const std::uint8_t* volatile parameter_page = nullptr;
-Signals signals{};
-State state{};
+Memory memory{};
 
 namespace {
 

@@ -541,9 +541,7 @@ const Parameters reference_parameters{
      0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0},
     .playing = false,
 };
-const std::uint8_t* volatile parameter_page = nullptr;
-Signals signals{};
-State state{};
+Memory memory{};
 
 namespace {
 

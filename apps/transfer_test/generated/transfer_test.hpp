@@ -36,9 +36,17 @@ struct State {
 
 extern Parameters parameters;
 extern const Parameters reference_parameters;
-extern const std::uint8_t* volatile parameter_page;
-extern Signals signals;
-extern State state;
+
+// What the steps write, in one object so that a step reaches all of it from one address.
+struct Memory {
+  const std::uint8_t* volatile parameter_page;
+  Signals signals;
+  State state;
+};
+extern Memory memory;
+inline const std::uint8_t* volatile& parameter_page = memory.parameter_page;
+inline Signals& signals = memory.signals;
+inline State& state = memory.state;
 
 // Resets the state, selects the working page and computes the constant blocks. Before the first step.
 void initialize();
