@@ -54,7 +54,10 @@ int main() {
   const bool level = (duet::cortex_m::register32(board::leds_register) & 1U) != 0;
   duet::TextBuffer<160> line;
   line.append("generated step_time: ").append(toggles).append(" steps, ").append(statistics.overruns);
-  line.append(" overruns, LED0 ").append(level ? "on" : "off").append(", level ").append(step_time::signals.level ? 1 : 0);
+  line.append(" overruns, LED0 ")
+      .append(level ? "on" : "off")
+      .append(", level ")
+      .append(step_time::signals.level ? 1 : 0);
   line.append('\n');
   duet::cortex_m::console_write(line.view());
   const bool model_ok = ran && toggles == ticks && statistics.overruns == 0 && level == step_time::signals.level;
@@ -62,8 +65,10 @@ int main() {
   // The benchmark: 10,000 ticks of 10 us each way, minus an empty model's tick.
   const std::uint64_t empty = duet::bench::hundredths_of_instructions_per_tick(10'000, 10'000, empty_step);
   step_time::initialize();
-  const std::uint64_t generated = duet::bench::hundredths_of_instructions_per_tick(10'000, 10'000, step_time::step_rate_1);
-  const std::uint64_t hand_written = duet::bench::hundredths_of_instructions_per_tick(10'000, 10'000, hand_written_step);
+  const std::uint64_t generated =
+      duet::bench::hundredths_of_instructions_per_tick(10'000, 10'000, step_time::step_rate_1);
+  const std::uint64_t hand_written =
+      duet::bench::hundredths_of_instructions_per_tick(10'000, 10'000, hand_written_step);
   line.clear();
   line.append("instructions per step: generated ");
   write_hundredths(line, generated - empty);

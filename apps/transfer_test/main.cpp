@@ -1,7 +1,8 @@
-// The thesis' XCP transfer test, in software in the loop: the master downloads a table of 4096 uint16 values into the
-// model's parameters over XCP on TCP; the model, stepped every 1 ms by the executive in real time, plays the table
-// out one element per step into a signal; DAQ on the step's event records that signal through the master; the
-// recording must equal the table element by element.
+// The thesis' XCP transfer test, in software in the loop, on the model transfer_test.yaml as duet gen generated it
+// (generated/): the master finds the table, the play switch and the output in the generated A2L, downloads a table of
+// 4096 uint16 values into the model's calibration segment over XCP on TCP, and sets the switch; the model, stepped
+// every 1 ms by the executive in real time, plays the table out one element per step into its output signal; DAQ on
+// the step's event records that signal; the recording must equal the table element by element.
 
 #include <array>
 #include <chrono>
@@ -16,9 +17,13 @@
 
 #include "duet/host/real_time_port.hpp"
 #include "duet/rt/executive.hpp"
+#include "duet/support/text_file.hpp"
+#include "duet/xcp/host/a2l.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/slave_server.hpp"
 #include "duet/xcp/slave.hpp"
+#include "transfer_test.hpp"
+#include "transfer_test_xcp.hpp"
 
 namespace {
 
@@ -31,24 +36,6 @@ using duet::xcp::host::SlaveServer;
 
 constexpr std::size_t table_size = 4096;
 
-// The model's parameters (tunable over XCP), its signal, and where the play-out stands.
-struct Parameters {
-  std::array<std::uint16_t, table_size> table;
-  std::uint8_t playing;  // the master starts the play-out
-};
-Parameters parameters{};
-std::uint16_t output = 0;
-std::uint32_t played = 0;
-
-void step() {
-  if (parameters.playing != 0 && played < table_size) output = parameters.table[played++];
-}
-void nothing() {}
-
-constexpr rt::Task tasks[] = {{.name = "1 ms", .priority = {1, 0}, .entry = step}};
-constexpr rt::ModelDescription description{
-    .name = "transfer test", .base_period_ns = 1'000'000, .tasks = tasks, .initialize = nothing, .terminate = nothing};
-
 std::mutex queue_mutex;
 std::uint32_t lock_queue() {
   queue_mutex.lock();
@@ -59,18 +46,10 @@ void unlock_queue(std::uint32_t) { queue_mutex.unlock(); }
 // The executive's clock for DAQ timestamps, in microseconds (the slave's default timestamp unit).
 std::uint32_t microseconds() { return static_cast<std::uint32_t>(duet::host::RealTimePort::monotonic_ns() / 1000U); }
 
-// The slave's side: memory declared to XCP, DAQ storage, the queue, the server.
+// The slave's side: the model's memory as the generated code declares it to XCP, DAQ storage, the queue, the server.
 struct Target {
-  std::array<xcp::MemoryRegion, 2> regions{xcp::MemoryRegion{.name = "signals",
-                                                             .address = 0x1000,
-                                                             .size = sizeof(output),
-                                                             .memory = reinterpret_cast<std::uint8_t*>(&output)},
-                                           xcp::MemoryRegion{.name = "parameters",
-                                                             .address = 0x10000,
-                                                             .size = sizeof(Parameters),
-                                                             .memory = reinterpret_cast<std::uint8_t*>(&parameters),
-                                                             .access = xcp::Access::read_write}};
-  std::array<xcp::EventChannel, 1> events{xcp::EventChannel{.name = "1 ms", .time_cycle = 1, .time_unit = 6}};
+  std::array<xcp::CalibrationSegment, 1> segments{transfer_test::xcp::calibration_segment()};
+  std::array<xcp::MemoryRegion, 1> regions{transfer_test::xcp::signals_region()};
   std::array<xcp::DaqList, 1> lists{};
   std::array<xcp::Odt, 1> odts{};
   std::array<xcp::OdtEntry, 1> entries{};
@@ -78,14 +57,41 @@ struct Target {
   std::array<std::uint8_t, 256> download_buffer{};
   xcp::TransmitQueue queue{queue_storage, {lock_queue, unlock_queue}};
   xcp::SlaveConfiguration configuration{.memory = xcp::MemoryMap{regions},
+                                        .segments = segments,
                                         .max_cto = 252,
                                         .download_buffer = download_buffer,
-                                        .events = events,
+                                        .events = transfer_test::xcp::events,
                                         .daq = {lists, odts, entries},
                                         .queue = &queue,
                                         .timestamp = microseconds};
   xcp::Slave slave{configuration};
 };
+
+// Where the A2L says a variable is.
+struct Addresses {
+  std::uint32_t table = 0;
+  std::uint32_t playing = 0;
+  std::uint32_t output = 0;
+};
+
+duet::Result<Addresses> addresses_from_a2l() {
+  auto text = duet::read_text_file(DUET_TRANSFER_TEST_A2L);
+  if (!text) return duet::Failure{text.error()};
+  auto a2l = xcp::host::read_a2l(text.value(), DUET_TRANSFER_TEST_A2L);
+  if (!a2l) return duet::Failure{a2l.error()};
+  Addresses found;
+  for (const auto& characteristic : a2l.value().characteristics) {
+    if (characteristic.name == "table") found.table = characteristic.address;
+    if (characteristic.name == "playing") found.playing = characteristic.address;
+  }
+  for (const auto& measurement : a2l.value().measurements) {
+    if (measurement.name == "output") found.output = measurement.address;
+  }
+  if (found.table == 0 || found.playing == 0 || found.output == 0) {
+    return duet::Failure{"the A2L lacks table, playing or output"};
+  }
+  return found;
+}
 
 // The executive's port, whose tasks sample their DAQ lists right after their step.
 class XcpPort : public duet::host::RealTimePort {
@@ -105,7 +111,14 @@ class XcpPort : public duet::host::RealTimePort {
 }  // namespace
 
 int run_transfer_test() {
+  const auto addresses = addresses_from_a2l();
+  if (!addresses) {
+    std::cerr << "transfer test: " << addresses.error() << '\n';
+    return 1;
+  }
+  const Addresses& at = addresses.value();
   Target target;
+  const rt::ModelDescription& description = transfer_test::description;
   XcpPort port{description, target};
   rt::Executive<XcpPort, 1> executive{description, port};
   port.attach(executive);
@@ -135,20 +148,21 @@ int run_transfer_test() {
     return 1;
   };
   if (auto connected = master.connect(); !connected) return fail(connected.error());
-  for (std::size_t at = 0; at < bytes.size(); at += 250) {  // the table, 125 values per DOWNLOAD
-    const std::size_t size = std::min<std::size_t>(250, bytes.size() - at);
-    if (auto written = master.download(0, 0x10000 + static_cast<std::uint32_t>(at), std::span{bytes}.subspan(at, size));
+  for (std::size_t offset = 0; offset < bytes.size(); offset += 250) {  // the table, 125 values per DOWNLOAD
+    const std::size_t size = std::min<std::size_t>(250, bytes.size() - offset);
+    if (auto written =
+            master.download(0, at.table + static_cast<std::uint32_t>(offset), std::span{bytes}.subspan(offset, size));
         !written) {
       return fail(written.error());
     }
   }
-  auto checked = master.upload(0, 0x10000, static_cast<std::uint32_t>(bytes.size()));
+  auto checked = master.upload(0, at.table, static_cast<std::uint32_t>(bytes.size()));
   if (!checked || checked.value() != bytes) return fail("the table did not arrive as it was sent");
-  if (auto started = master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, 0x1000, 2}}}}); !started) {
+  if (auto started = master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, at.output, 2}}}}); !started) {
     return fail(started.error());
   }
   const std::array<std::uint8_t, 1> on{1};
-  if (auto playing = master.download(0, 0x10000 + offsetof(Parameters, playing), on); !playing) {
+  if (auto playing = master.download(0, at.playing, on); !playing) {
     return fail(playing.error());
   }
 
