@@ -11,6 +11,7 @@
 #include "duet/model/generate.hpp"
 #include "duet/model/model_file.hpp"
 #include "duet/model/program.hpp"
+#include "duet/support/text_file.hpp"
 
 namespace duet::cli {
 namespace {
@@ -45,9 +46,7 @@ ExitCode run_gen(const GenOptions& options, Streams streams) {
   for (const model::GeneratedFile& file : files.value()) {
     const std::filesystem::path path = std::filesystem::path{options.output} / file.name;
     // Unchanged files keep their time stamps, so that builds do not redo them.
-    std::ifstream existing{path, std::ios::binary};
-    const std::string old{std::istreambuf_iterator<char>{existing}, std::istreambuf_iterator<char>{}};
-    if (existing.is_open() && old == file.text) continue;
+    if (const auto existing = read_text_file(path.string()); existing.ok() && existing.value() == file.text) continue;
     std::ofstream out{path, std::ios::binary};
     out << file.text;
     if (!out) {

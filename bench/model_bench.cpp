@@ -1,0 +1,46 @@
+// Benchmarks of the model tools on the PC: generating the code of the largest example (target < 1 s, issue #7), and
+// simulating it.
+#include <benchmark/benchmark.h>
+
+#include "duet/model/generate.hpp"
+#include "duet/model/model_file.hpp"
+#include "duet/model/program.hpp"
+#include "duet/model/simulation.hpp"
+
+namespace {
+
+// The largest example by generated code: the transfer test's 4096-element table.
+const std::string largest_example = std::string{DUET_SOURCE_DIR} + "/apps/transfer_test/transfer_test.yaml";
+
+// What `duet gen` does: read, validate, type, lay out, and generate every file (not the writing).
+void generate_largest_example(benchmark::State& state) {
+  for (auto _ : state) {
+    auto model = duet::model::load_model(largest_example);
+    const duet::model::ProgramBuild build = duet::model::build_program(model.value());
+    auto files = duet::model::generate(*build.program, "transfer_test.yaml");
+    benchmark::DoNotOptimize(files.value().front().text.data());
+  }
+}
+BENCHMARK(generate_largest_example)->Unit(benchmark::kMillisecond);
+
+// Simulated base ticks per second of the transfer test, playing.
+void simulate_transfer_test(benchmark::State& state) {
+  auto model = duet::model::load_model(largest_example);
+  const duet::model::ProgramBuild build = duet::model::build_program(model.value());
+  constexpr double seconds = 10.0;
+  for (auto _ : state) {
+    duet::plant::Loopback plant;
+    duet::model::SimulationOptions options;
+    options.duration_s = seconds;
+    options.before_tick = [](std::uint64_t tick, duet::model::Interpreter& interpreter) {
+      if (tick == 0) interpreter.set_parameter(1, 0, 1);
+    };
+    auto result = duet::model::simulate(*build.program, plant, options);
+    benchmark::DoNotOptimize(result.value().ticks);
+  }
+  state.counters["ticks_per_second"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * seconds * 1000.0, benchmark::Counter::kIsRate);
+}
+BENCHMARK(simulate_transfer_test)->Unit(benchmark::kMillisecond);
+
+}  // namespace
