@@ -32,15 +32,21 @@ ExitCode run_gen(const GenOptions& options, Streams streams) {
     streams.err << model::format(options.file, diagnostic) << '\n';
   }
   if (!build.program) return ExitCode::failure;
-  auto files = model::generate(*build.program, std::filesystem::path{options.file}.filename().string());
-  if (!files) {
-    streams.err << "duet gen: " << options.file << ": " << files.error() << '\n';
-    return ExitCode::failure;
-  }
   std::error_code error;
   std::filesystem::create_directories(options.output, error);
   if (error) {
     streams.err << "duet gen: cannot create " << options.output << ": " << error.message() << '\n';
+    return ExitCode::failure;
+  }
+  // The model's folder as the CMake fragment reaches it from the output folder (for Code blocks' headers).
+  const std::filesystem::path model_folder =
+      std::filesystem::weakly_canonical(std::filesystem::absolute(options.file)).parent_path();
+  const std::string relative =
+      model_folder.lexically_relative(std::filesystem::weakly_canonical(options.output)).generic_string();
+  auto files = model::generate(*build.program, std::filesystem::path{options.file}.filename().string(),
+                               relative.empty() ? "." : relative);
+  if (!files) {
+    streams.err << "duet gen: " << options.file << ": " << files.error() << '\n';
     return ExitCode::failure;
   }
   for (const model::GeneratedFile& file : files.value()) {

@@ -12,6 +12,7 @@
 #include "duet/version.hpp"
 #include "duet/xcp/host/a2l.hpp"
 #include "generator.hpp"
+#include "user_code.hpp"
 
 namespace duet::model {
 namespace {
@@ -92,8 +93,12 @@ std::string comment(const std::string& text) {
 
 class FileWriter {
  public:
-  FileWriter(const Program& program, std::string source)
-      : program_(program), generator_(program), source_(std::move(source)), name_(program.model->name) {
+  FileWriter(const Program& program, std::string source, std::string model_folder)
+      : program_(program),
+        generator_(program),
+        source_(std::move(source)),
+        model_folder_(std::move(model_folder)),
+        name_(program.model->name) {
     std::size_t size = 0;
     parameters_ = lay_out(generator_.parameter_fields(), size);
     parameters_size_ = size;
@@ -148,6 +153,9 @@ class FileWriter {
     text += "// writes, `reference_parameters` the model's values (flash); the steps read the page `parameter_page`\n";
     text += "// points to (XCP's SET_CAL_PAGE switches it).\nstruct Parameters {\n" + members(parameters_) + "};\n\n";
     text += "// Signals that XCP measures or that outlive a step.\nstruct Signals {\n" + members(signals_) + "};\n\n";
+    for (const ProgramBlock& block : program_.blocks) {
+      if (block.block->code) text += code_structures(program_, block) + "\n";
+    }
     text += "// The blocks' state.\nstruct State {\n" + generator_.state_members() + "};\n\n";
     text += "extern Parameters parameters;\nextern const Parameters reference_parameters;\n\n";
     text += "// What the steps write, in one object so that a step reaches all of it from one address.\n";
@@ -203,7 +211,13 @@ class FileWriter {
     text += "#include \"duet/blocks/arithmetic.hpp\"\n#include \"duet/blocks/convert.hpp\"\n";
     text += "#include \"duet/blocks/logic.hpp\"\n#include \"duet/blocks/matrix.hpp\"\n";
     text += "#include \"duet/blocks/nonlinear.hpp\"\n#include \"duet/blocks/table.hpp\"\n";
-    text += "#include \"duet/blocks/trigonometry.hpp\"\n#include \"duet/hardware/hardware.hpp\"\n\n";
+    text += "#include \"duet/blocks/trigonometry.hpp\"\n#include \"duet/hardware/hardware.hpp\"\n";
+    std::set<std::string> headers;  // the Code blocks' functions, from the model's folder
+    for (const ProgramBlock& block : program_.blocks) {
+      if (block.block->code) headers.insert(block.block->code->file);
+    }
+    for (const std::string& header : headers) text += "#include \"" + header + "\"\n";
+    text += "\n";
     text += "namespace " + name_ + " {\n\n";
     text +=
         offset_checks("Parameters", parameters_, parameters_size_) + offset_checks("Signals", signals_, signals_size_);
@@ -344,12 +358,20 @@ class FileWriter {
     text += "add_library(" + name_ + "_model STATIC ${CMAKE_CURRENT_LIST_DIR}/" + name_ + ".cpp)\n";
     text += "target_include_directories(" + name_ + "_model PUBLIC ${CMAKE_CURRENT_LIST_DIR})\n";
     text += "target_link_libraries(" + name_ + "_model PUBLIC duet_blocks duet_rt duet_xcp duet_hardware)\n";
+    const bool user_code = std::any_of(program_.blocks.begin(), program_.blocks.end(),
+                                       [](const ProgramBlock& block) { return block.block->code.has_value(); });
+    if (user_code) {
+      text += "# The Code blocks' headers, in the model's folder.\n";
+      text +=
+          "target_include_directories(" + name_ + "_model PRIVATE ${CMAKE_CURRENT_LIST_DIR}/" + model_folder_ + ")\n";
+    }
     return text;
   }
 
   const Program& program_;
   Generator generator_;
   std::string source_;
+  std::string model_folder_;
   std::string name_;
   std::vector<Field> parameters_;
   std::size_t parameters_size_ = 1;
@@ -360,13 +382,9 @@ class FileWriter {
 
 }  // namespace
 
-Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source) {
-  for (const ProgramBlock& block : program.blocks) {
-    if (block.block->code) {
-      return Failure{"block '" + block.path + "' is a Code block, which duet gen does not generate yet"};
-    }
-  }
-  return FileWriter{program, source}.files();
+Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,
+                                            const std::string& model_folder) {
+  return FileWriter{program, source, model_folder}.files();
 }
 
 }  // namespace duet::model

@@ -10,6 +10,7 @@
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
 #include "typed.hpp"
+#include "user_code.hpp"
 
 namespace duet::model {
 namespace {
@@ -151,6 +152,16 @@ std::string Generator::argument(const ProgramBlock& block, const std::string& na
   return literal(type, given != nullptr && !given->value.elements.empty() ? given->value.elements[0] : fallback);
 }
 
+std::string Generator::argument_value(const ProgramBlock& block, const std::string& name, DataType type,
+                                      std::size_t index) const {
+  const Argument& given = *block.argument(name);
+  if (given.kind == Argument::Kind::parameter) {
+    const Parameter& parameter = program_.parameter(given);
+    return "p." + parameter.name + (parameter.value.elements.size() > 1 ? "[" + std::to_string(index) + "]" : "");
+  }
+  return literal(type, given.value.elements.empty() ? 0.0 : given.value.elements[index]);
+}
+
 std::string Generator::state(const ProgramBlock& block, const std::string& index) const {
   const std::size_t count = block.outputs.empty() ? 1 : program_.signals[block.outputs[0]].type.elements();
   return "state." + block.identifier + (count > 1 && block.type() != "RateTransition" ? "[" + index + "]" : "");
@@ -159,6 +170,10 @@ std::string Generator::state(const ProgramBlock& block, const std::string& index
 std::string Generator::state_members() const {
   std::string text;
   for (const ProgramBlock& block : program_.blocks) {
+    if (block.block->code) {
+      text += "  code::" + block.identifier + "::State " + block.identifier + ";\n";
+      continue;
+    }
     if (!has_state(block.type()) || block.outputs.empty()) continue;
     const SignalType& type = program_.signals[block.outputs[0]].type;
     const std::string element_type = type_of(type.type);
@@ -183,6 +198,17 @@ std::string Generator::state_members() const {
 std::string Generator::state_resets() const {
   std::string text;
   for (const ProgramBlock& block : program_.blocks) {
+    if (block.block->code) {
+      for (const StateVariable& variable : block.block->code->state) {
+        for (std::size_t i = 0; i < variable.initial.elements.size(); ++i) {
+          const std::size_t count = variable.initial.elements.size();
+          text += "  state." + block.identifier + "." + variable.name +
+                  (count > 1 ? "[" + std::to_string(i) + "]" : "") + " = " +
+                  literal(variable.type, variable.initial.elements[i]) + ";\n";
+        }
+      }
+      continue;
+    }
     if (!has_state(block.type()) || block.outputs.empty()) continue;
     const SignalType& type = program_.signals[block.outputs[0]].type;
     const std::size_t n = type.elements();
@@ -273,6 +299,7 @@ std::string Generator::update_phase(std::size_t index) const {
 
 std::string Generator::output_statements(const ProgramBlock& block) const {
   const std::string& type = block.type();
+  if (block.block->code) return code_call(block);
   if (type == "Outport" || block.outputs.empty()) return hardware_output(block);
   if (type == "RateTransition") return rate_transition_output(block);
   if (!hardware_resource(block).empty()) return hardware_output(block);
@@ -403,6 +430,37 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
                            argument(block, "upper", infinity, t, "i") + "}, " + period + ");");
   }
   return {};
+}
+
+// A Code block: its inputs and parameters copied into its structures, the function called with them and its state,
+// its outputs copied out; the interpreter moves the same bytes.
+std::string Generator::code_call(const ProgramBlock& block) const {
+  const std::string space = "code::" + block.identifier + "::";
+  std::string text = "  {\n    " + space + "Inputs in{};\n";
+  const auto copy = [](const std::string& to, const std::string& from, std::size_t count) {
+    if (count == 1) return "    " + to + " = " + from + ";\n";
+    return "    for (std::size_t i = 0; i < " + std::to_string(count) + "; ++i) " + to + "[i] = " + from + "[i];\n";
+  };
+  for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+    const std::size_t count = program_.signals[block.inputs[k]].type.elements();
+    text += copy("in." + block.input_ports[k], storage(block.inputs[k]), count);
+  }
+  text += "    " + space + "Outputs out{};\n    " + space + "Parameters parameters{};\n";
+  for (const auto& [name, argument] : block.arguments) {
+    const std::size_t count = std::max<std::size_t>(1, argument.value.elements.size());
+    const DataType type = code_parameter_type(program_, block, name);
+    for (std::size_t i = 0; i < count; ++i) {
+      const std::string index = std::to_string(i);
+      text += "    parameters." + name + (count > 1 ? "[" + index + "]" : "") + " = " +
+              argument_value(block, name, type, i) + ";\n";
+    }
+  }
+  text += "    " + block.block->code->function + "(in, out, state." + block.identifier + ", parameters);\n";
+  for (std::size_t k = 0; k < block.outputs.size(); ++k) {
+    const std::size_t count = program_.signals[block.outputs[k]].type.elements();
+    text += copy(storage(block.outputs[k]), "out." + block.output_ports[k], count);
+  }
+  return text + "  }\n";
 }
 
 // Hardware blocks: a pin through gpio_write/gpio_read, anything else through the port's resource calls as doubles,

@@ -50,7 +50,11 @@ class Generator {
   [[nodiscard]] std::string pointer(std::size_t signal) const;
   [[nodiscard]] std::string argument(const ProgramBlock& block, const std::string& name, double fallback, DataType type,
                                      const std::string& index) const;
+  // A Code block's parameter element in its declared type.
+  [[nodiscard]] std::string argument_value(const ProgramBlock& block, const std::string& name, DataType type,
+                                           std::size_t index) const;
   [[nodiscard]] std::string state(const ProgramBlock& block, const std::string& index) const;
+  [[nodiscard]] std::string code_call(const ProgramBlock& block) const;
   [[nodiscard]] std::string declare_outputs(const ProgramBlock& block) const;
   [[nodiscard]] std::string guarded(const ProgramBlock& block, std::string statements) const;
   [[nodiscard]] std::string output_statements(const ProgramBlock& block) const;

@@ -15,6 +15,7 @@
 #include "duet/blocks/trigonometry.hpp"
 #include "duet/model/data_type.hpp"
 #include "typed.hpp"
+#include "user_code.hpp"
 
 namespace duet::model {
 
@@ -520,7 +521,76 @@ Compiled hardware(Compiler& c, const ProgramBlock& block) {
           {}};
 }
 
-Compiled compile(Compiler& c, const ProgramBlock& block) {
+// A Code block: its four structures as bytes laid out as generated code declares them (user_code.hpp), the inputs
+// and parameters copied in, the function called, the outputs copied out; the state persists between calls.
+Compiled code_block(Compiler& c, const ProgramBlock& block, CodeFunction function) {
+  const CodeInterface interface = code_interface(c.program(), block);
+  struct Copy {
+    const std::byte* const* base;  // a signal's or a parameter's memory (through the page pointer)
+    std::size_t offset;
+    std::size_t to;
+    std::size_t bytes;
+  };
+  struct Buffers {
+    std::vector<double> in, out, state, parameters;  // doubles: aligned for every member
+  };
+  const auto words = [](std::size_t bytes) { return bytes / sizeof(double) + 1; };
+  auto buffers = std::make_shared<Buffers>(
+      Buffers{std::vector<double>(words(interface.inputs_size)), std::vector<double>(words(interface.outputs_size)),
+              std::vector<double>(words(interface.state_size)), std::vector<double>(words(interface.parameters_size))});
+  const auto field_named = [](const std::vector<Field>& fields, const std::string& name) {
+    return *std::find_if(fields.begin(), fields.end(), [&name](const Field& field) { return field.name == name; });
+  };
+  std::vector<Copy> inputs;
+  for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+    const Field field = field_named(interface.inputs, block.input_ports[k]);
+    const Operand<std::byte> source = c.input<std::byte>(block, k);
+    inputs.push_back({source.base, source.offset, field.offset, size_of(field.type) * field.count});
+  }
+  std::vector<Copy> parameters;
+  for (const Field& field : interface.parameters) {
+    parameters.push_back(with_type(field.type, [&](auto tag) -> Copy {
+      using T = decltype(tag);
+      const Operand<T> source = c.argument<T>(block, field.name, 0);
+      return {source.base, source.offset, field.offset, sizeof(T) * field.count};
+    }));
+  }
+  std::vector<std::pair<std::byte*, Field>> outputs;
+  for (std::size_t k = 0; k < block.outputs.size(); ++k) {
+    outputs.emplace_back(c.output<std::byte>(block, k), field_named(interface.outputs, block.output_ports[k]));
+  }
+  const auto bytes_of = [](std::vector<double>& buffer) { return reinterpret_cast<std::byte*>(buffer.data()); };
+  std::vector<StateVariable> state = block.block->code->state;
+  return {{[buffers, inputs, parameters, outputs, function, bytes_of] {
+             std::fill(buffers->out.begin(), buffers->out.end(), 0.0);
+             for (const Copy& copy : inputs) {
+               std::memcpy(bytes_of(buffers->in) + copy.to, *copy.base + copy.offset, copy.bytes);
+             }
+             for (const Copy& copy : parameters) {
+               std::memcpy(bytes_of(buffers->parameters) + copy.to, *copy.base + copy.offset, copy.bytes);
+             }
+             function(buffers->in.data(), buffers->out.data(), buffers->state.data(), buffers->parameters.data());
+             for (const auto& [destination, field] : outputs) {
+               std::memcpy(destination, bytes_of(buffers->out) + field.offset, size_of(field.type) * field.count);
+             }
+           },
+           {}},
+          [buffers, state, interface, bytes_of] {
+            std::fill(buffers->state.begin(), buffers->state.end(), 0.0);
+            for (std::size_t k = 0; k < state.size(); ++k) {
+              with_type(state[k].type, [&](auto tag) {
+                using T = decltype(tag);
+                for (std::size_t i = 0; i < state[k].initial.elements.size(); ++i) {
+                  const T value = blocks::convert<T>(state[k].initial.elements[i]);
+                  std::memcpy(bytes_of(buffers->state) + interface.state[k].offset + i * sizeof(T), &value, sizeof(T));
+                }
+              });
+            }
+          }};
+}
+
+Compiled compile(Compiler& c, const ProgramBlock& block, const UserCodeLibrary* user_code, std::size_t index) {
+  if (block.block->code) return code_block(c, block, user_code->function(index));
   const std::string& type = block.type();
   if (type == "Outport") return {};
   if (type == "RateTransition") return rate_transition(c, block);
@@ -576,11 +646,12 @@ namespace duet::model {
 Interpreter::Interpreter(const Program& program) : program_(program), storage_(std::make_unique<Storage>()) {}
 Interpreter::~Interpreter() = default;
 
-Result<std::unique_ptr<Interpreter>> Interpreter::create(const Program& program, plant::Plant& plant) {
-  for (const ProgramBlock& block : program.blocks) {
-    if (block.block->code) {
-      return Failure{"block '" + block.path + "' is a Code block, which simulation cannot run yet (issue #7: user " +
-                     "code in simulation)"};
+Result<std::unique_ptr<Interpreter>> Interpreter::create(const Program& program, plant::Plant& plant,
+                                                         const UserCodeLibrary* user_code) {
+  for (std::size_t index = 0; index < program.blocks.size(); ++index) {
+    if (program.blocks[index].block->code && (user_code == nullptr || user_code->function(index) == nullptr)) {
+      return Failure{"block '" + program.blocks[index].path +
+                     "' is a Code block: simulation needs its function compiled (UserCodeLibrary::build)"};
     }
   }
   std::unique_ptr<Interpreter> interpreter{new Interpreter{program}};
@@ -610,7 +681,7 @@ Result<std::unique_ptr<Interpreter>> Interpreter::create(const Program& program,
 
   Compiler compiler{program, storage, plant};
   for (const ProgramBlock& block : program.blocks) {
-    Compiled compiled = compile(compiler, block);
+    Compiled compiled = compile(compiler, block, user_code, static_cast<std::size_t>(&block - program.blocks.data()));
     interpreter->blocks_.push_back({guarded(compiler, block, std::move(compiled.phases.first)),
                                     guarded(compiler, block, std::move(compiled.phases.second))});
     if (compiled.reset) interpreter->resets_.push_back(std::move(compiled.reset));
@@ -652,7 +723,9 @@ double Interpreter::signal(std::size_t signal, std::size_t element) const {
 }
 
 void Interpreter::set_parameter(std::size_t parameter, std::size_t element, double value) {
-  const DataType type = program_.model->parameters[parameter].type;
+  const auto& parameters = program_.model->parameters;
+  if (parameter >= parameters.size() || element >= parameters[parameter].value.elements.size()) return;
+  const DataType type = parameters[parameter].type;
   std::byte* at = reinterpret_cast<std::byte*>(storage_->working.data()) + storage_->parameter_offset[parameter];
   with_type(type, [&](auto tag) {
     using T = decltype(tag);

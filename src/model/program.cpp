@@ -252,10 +252,10 @@ class ProgramBuilder {
       if (block.type != "Subsystem") continue;
       const std::string path = prefix + block.name;
       if (block.trigger.kind == Trigger::Kind::edge) {
-        diagnostics.push_back({Diagnostic::Severity::error, block.trigger.location,
-                               "subsystem '" + path + "' has an edge trigger, which simulation and generation do "
-                               "not run yet",
-                               "an enabled subsystem (enable: SIGNAL) or an interrupt trigger can stand in for now"});
+        diagnostics.push_back(
+            {Diagnostic::Severity::error, block.trigger.location,
+             "subsystem '" + path + "' has an edge trigger, which simulation and code " + "generation do not run yet",
+             "an enabled subsystem or an interrupt trigger can stand in for now"});
       }
       const std::size_t inner = enables + (block.enable.empty() ? 0 : 1);
       if (!block.enable.empty()) {
@@ -360,9 +360,9 @@ class ProgramBuilder {
     for (const std::string& path : rates_.constant_blocks) {  // in execution order: what a block reads comes first
       const ProgramBlock& block = program_.blocks[block_of.at(path)];
       const bool is_parameter = !block.outputs.empty() && program_.signals[block.outputs[0]].parameter;
-      const bool reads_parameter =
-          std::any_of(block.arguments.begin(), block.arguments.end(),
-                      [](const auto& entry) { return entry.second.kind == Argument::Kind::parameter; });
+      const bool reads_parameter = std::any_of(block.arguments.begin(), block.arguments.end(), [](const auto& entry) {
+        return entry.second.kind == Argument::Kind::parameter;
+      });
       const bool reads_tunable = std::any_of(block.inputs.begin(), block.inputs.end(),
                                              [&tunable](std::size_t input) { return tunable.count(input) != 0; });
       if (is_parameter || !(reads_parameter || reads_tunable)) {
@@ -401,8 +401,8 @@ class ProgramBuilder {
     for (std::size_t k = 0; k < outputs.size(); ++k) {
       const ProgramBlock& block = program_.blocks[outputs[k]];
       const BlockType* type = find_block_type(block.type());
-      const bool feedthrough = block.block->code ? block.block->code->direct_feedthrough
-                                                 : type == nullptr || type->direct_feedthrough;
+      const bool feedthrough =
+          block.block->code ? block.block->code->direct_feedthrough : type == nullptr || type->direct_feedthrough;
       if (feedthrough) {
         for (const std::size_t input : block.inputs) depends(k, input);
       }

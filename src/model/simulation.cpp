@@ -97,7 +97,9 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
   if (!signals) return Failure{signals.error()};
   auto priorities = task_priorities(program);
   if (!priorities) return Failure{priorities.error()};
-  auto created = Interpreter::create(program, plant);
+  auto user_code = UserCodeLibrary::build(program);
+  if (!user_code) return Failure{user_code.error()};
+  auto created = Interpreter::create(program, plant, user_code.value().get());
   if (!created) return Failure{created.error()};
   Interpreter& interpreter = *created.value();
 

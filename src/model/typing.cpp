@@ -148,7 +148,7 @@ class BlockCheck {
     const std::size_t before = diagnostics_.size();
     words();
     if (block_.block->code) {
-      code_inputs();
+      code_ports();
       return;
     }
     inputs();
@@ -325,8 +325,8 @@ class BlockCheck {
     }
   }
 
-  // A Code block's inputs are declared: the signals must be what the function takes.
-  void code_inputs() {
+  // A Code block's ports are declared: the signals must be what the function takes.
+  void code_ports() {
     for (std::size_t k = 0; k < block_.inputs.size(); ++k) {
       for (const Connection& port : block_.block->inputs) {
         if (port.port != block_.input_ports[k]) continue;
@@ -337,6 +337,35 @@ class BlockCheck {
                   " but signal '" + port.signal + "' is " + describe(input_type(k)),
               "declare the port as the signal is, or convert the signal");
       }
+    }
+    // Its parameters and state declare their types: their values must be values of them.
+    for (const auto& [parameter_name, parameter] : block_.block->parameters) {
+      if (parameter.literal) {
+        declared_value("parameter '" + parameter_name + "'", *parameter.literal,
+                       {parameter.type.value_or(DataType::float64), parameter.literal->shape}, parameter.location);
+      }
+    }
+    for (const StateVariable& state : block_.block->code->state) {
+      declared_value("state '" + state.name + "'", state.initial, {state.type, state.shape}, state.location);
+    }
+  }
+
+  // A value given for something of a declared type: a scalar (which fills it) or one value per element.
+  void declared_value(const std::string& what, const Value& value, const SignalType& type, Location where) {
+    for (const double element : value.elements) {
+      if (!fits(element, type.type)) {
+        error(where,
+              "type mismatch: " + what + " of " + name_ + " is " + format_number(element) +
+                  ", which is not a value of " + std::string{type_name(type.type)},
+              "give a value of " + std::string{type_name(type.type)} + ", or declare another type");
+        return;
+      }
+    }
+    if (!value.shape.empty() && value.elements.size() != type.elements()) {
+      error(where,
+            "size mismatch: " + what + " of " + name_ + " has " + std::to_string(value.elements.size()) +
+                " values for " + describe(type),
+            "give a scalar, or one value per element");
     }
   }
 

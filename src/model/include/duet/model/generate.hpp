@@ -27,7 +27,9 @@ struct GeneratedFile {
 inline constexpr std::uint32_t parameters_xcp_address = 0x0001'0000;
 inline constexpr std::uint32_t signals_xcp_address = 0x0002'0000;
 
-// `source` names the model file in the files' first lines.
-[[nodiscard]] Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source);
+// `source` names the model file in the files' first lines; `model_folder` is the model's folder relative to where the
+// files go, for the CMake fragment to find the Code blocks' headers.
+[[nodiscard]] Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,
+                                                          const std::string& model_folder = "..");
 
 }  // namespace duet::model

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "duet/model/program.hpp"
+#include "duet/model/user_code_library.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/support/result.hpp"
 
@@ -21,8 +22,10 @@ namespace duet::model {
 
 class Interpreter {
  public:
-  // `program` and `plant` must outlive the interpreter. Fails for what simulation cannot run (a Code block).
-  static Result<std::unique_ptr<Interpreter>> create(const Program& program, plant::Plant& plant);
+  // `program`, `plant` and `user_code` must outlive the interpreter. A program with Code blocks needs their compiled
+  // functions (UserCodeLibrary::build).
+  static Result<std::unique_ptr<Interpreter>> create(const Program& program, plant::Plant& plant,
+                                                     const UserCodeLibrary* user_code = nullptr);
 
   Interpreter(const Interpreter&) = delete;
   Interpreter& operator=(const Interpreter&) = delete;
@@ -38,7 +41,8 @@ class Interpreter {
   // A signal's bytes as the generated code would hold them.
   [[nodiscard]] std::span<const std::byte> signal_bytes(std::size_t signal) const;
 
-  // Writes one element of a tunable parameter on the working page, converted to its type.
+  // Writes one element of a tunable parameter on the working page, converted to its type (saturated like a Convert
+  // block). A parameter or element the model does not have is ignored.
   void set_parameter(std::size_t parameter, std::size_t element, double value);
   void use_reference_page(bool reference);
 
