@@ -54,6 +54,14 @@ std::optional<blocks::LogicOperator> parse_logic_operator(std::string_view text)
   return std::nullopt;
 }
 
+blocks::Edge edge_of(const ProgramBlock& block) {
+  const Argument* edge = block.argument("edge");
+  const std::string text = edge == nullptr ? std::string{} : edge->text;
+  if (text == "falling") return blocks::Edge::falling;
+  if (text == "either") return blocks::Edge::either;
+  return blocks::Edge::rising;
+}
+
 blocks::CompareOperator compare_operator(const ProgramBlock& block) {
   const Argument* op = block.argument("operator");
   return parse_compare_operator(op == nullptr ? "" : op->text).value_or(blocks::CompareOperator::equal);

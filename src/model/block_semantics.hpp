@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "duet/blocks/logic.hpp"
+#include "duet/blocks/state.hpp"
 #include "duet/model/program.hpp"
 
 namespace duet::model {
@@ -30,6 +31,7 @@ struct MatrixSizes {
 
 [[nodiscard]] std::optional<blocks::CompareOperator> parse_compare_operator(std::string_view text);
 [[nodiscard]] std::optional<blocks::LogicOperator> parse_logic_operator(std::string_view text);
+[[nodiscard]] blocks::Edge edge_of(const ProgramBlock& block);  // rising, falling or either (the reader checks it)
 // Of a validated block (check_types refuses unknown operators).
 [[nodiscard]] blocks::CompareOperator compare_operator(const ProgramBlock& block);
 [[nodiscard]] blocks::LogicOperator logic_operator(const ProgramBlock& block);

@@ -36,6 +36,7 @@ const std::vector<BlockType> table{
      {"y"},
      {{"p"}, {"i", false}, {"d", false}, {"n", false}, {"lower", false}, {"upper", false}}},
     {"MatrixMultiply", {"a", "b"}, {"y"}, {}},
+    {"EdgeDetect", {"u"}, {"y"}, {{"edge"}}, true},
     {"RateTransition", {"u"}, {"y"}, {{"mode", false}, {"initial", false}}, false},
     {"Outport", {"u"}, {}, {}},
     // Hardware: each port implements them (docs/MODELS.md).
@@ -58,8 +59,8 @@ const std::vector<BlockType> table{
 std::span<const BlockType> block_types() { return table; }
 
 bool is_word_parameter(std::string_view parameter) {
-  constexpr std::string_view words[] = {"pin",     "timer",    "spi",  "adc",  "line",
-                                        "channel", "operator", "mode", "type", "signs"};
+  constexpr std::string_view words[] = {"pin",      "timer", "spi",  "adc",   "line", "channel",
+                                        "operator", "mode",  "type", "signs", "edge"};
   return std::find(std::begin(words), std::end(words), parameter) != std::end(words);
 }
 

@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <deque>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,14 @@ class FlatModel {
   }
 
   std::vector<Node> nodes;
+  // Blocks the flattening adds (edge detectors of triggered subsystems), kept while a node or a Program needs them.
+  std::shared_ptr<std::deque<Block>> implied_blocks = std::make_shared<std::deque<Block>>();
+
+  // Whether the model spells the node out (or the flattening implied it).
+  [[nodiscard]] bool is_implied(const Node& node) const {
+    return std::any_of(implied_blocks->begin(), implied_blocks->end(),
+                       [&node](const Block& block) { return &block == node.block; });
+  }
 
   // The name a resolved signal has furthest out: a subsystem's output is known by the parent's signal it drives.
   [[nodiscard]] std::string outermost_name(const std::string& resolved) const {
@@ -55,6 +65,21 @@ class FlatModel {
   }
 
  private:
+  static Block edge_detector(const Block& subsystem) {
+    Block detector;
+    detector.name = "trigger_edge";
+    detector.type = "EdgeDetect";
+    detector.location = subsystem.trigger.location;
+    detector.type_location = subsystem.trigger.location;
+    BlockParameter edge;
+    edge.text = subsystem.trigger.edge;
+    edge.location = subsystem.trigger.location;
+    detector.parameters.emplace_back("edge", edge);
+    detector.inputs.push_back({"u", subsystem.trigger.signal, subsystem.trigger.location, std::nullopt, {}});
+    detector.outputs.push_back({"y", "triggered", subsystem.trigger.location, std::nullopt, {}});
+    return detector;
+  }
+
   void scope(const std::vector<Block>& blocks, const std::string& prefix, const std::string& interrupt,
              const std::vector<std::string>& enables) {
     for (const Block& block : blocks) {
@@ -66,6 +91,18 @@ class FlatModel {
         for (const Connection& output : block.outputs) aliases_[prefix + output.signal] = inner + output.port;
         std::vector<std::string> inner_enables = enables;
         if (!block.enable.empty()) inner_enables.push_back(prefix + block.enable);
+        if (block.trigger.kind == Trigger::Kind::edge) {
+          // The edge is detected once per step of the triggering signal's rate, before the subsystem's blocks run.
+          const Block& detector = implied_blocks->emplace_back(edge_detector(block));
+          nodes.push_back({inner + detector.name,
+                           &detector,
+                           interrupt,
+                           {{prefix + block.trigger.signal, block.trigger.location}},
+                           {inner + detector.outputs[0].signal},
+                           {},
+                           enables});
+          inner_enables.push_back(inner + detector.outputs[0].signal);
+        }
         scope(block.blocks, inner, task, inner_enables);
         continue;
       }

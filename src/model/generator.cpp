@@ -49,8 +49,8 @@ std::string logic_name(blocks::LogicOperator op) {
 }
 
 bool has_state(const std::string& type) {
-  return type == "UnitDelay" || type == "Counter" || type == "DiscreteIntegrator" || type == "DiscreteDerivative" ||
-         type == "DiscretePid" || type == "RateTransition";
+  return type == "UnitDelay" || type == "EdgeDetect" || type == "Counter" || type == "DiscreteIntegrator" ||
+         type == "DiscreteDerivative" || type == "DiscretePid" || type == "RateTransition";
 }
 
 }  // namespace
@@ -190,6 +190,11 @@ std::string Generator::state_members() const {
       if (transfer.kind != Transfer::Kind::latest) text += "  std::uint32_t " + block.identifier + "_countdown;\n";
       continue;
     }
+    if (block.type() == "EdgeDetect") {  // remembers its input, of the input's type
+      const DataType input = program_.signals[block.inputs[0]].type.type;
+      text += "  duet::blocks::EdgeDetector<" + type_of(input) + "> " + block.identifier + ";\n";
+      continue;
+    }
     text += "  duet::blocks::" + block.type() + "<" + element_type + "> " + block.identifier + count + ";\n";
   }
   return text;
@@ -226,6 +231,9 @@ std::string Generator::state_resets() const {
       text += for_each(n, state(block, "i") + ".state = " + argument(block, "initial", 0, type.type, "i") + ";");
     } else if (kind == "Counter") {
       text += for_each(n, state(block, "i") + ".count = " + argument(block, "initial", 0, type.type, "i") + ";");
+    } else if (kind == "EdgeDetect") {
+      text +=
+          "  " + state(block, "0") + ".previous = " + literal(program_.signals[block.inputs[0]].type.type, 0) + ";\n";
     } else if (kind == "DiscreteDerivative") {
       text += for_each(n, state(block, "i") + ".previous = " + literal(type.type, 0) + ";");
     } else if (kind == "DiscretePid") {
@@ -385,6 +393,11 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
     return "  duet::blocks::matrix_multiply(" + pointer(block.inputs[0]) + ", " + pointer(block.inputs[1]) + ", " +
            pointer(y) + ", " + std::to_string(sizes.rows) + ", " + std::to_string(sizes.inner) + ", " +
            std::to_string(sizes.columns) + ");\n";
+  }
+  if (type == "EdgeDetect") {
+    constexpr const char* edges[] = {"rising", "falling", "either"};
+    return assign(state(block, "0") + ".detect(duet::blocks::Edge::" + edges[static_cast<int>(edge_of(block))] + ", " +
+                  in(0, "0") + ")");
   }
   if (type == "UnitDelay" || type == "Counter" || type == "DiscreteIntegrator") {
     return assign(state(block, "i") + ".output()");

@@ -380,6 +380,14 @@ Compiled by_input_type(Compiler& c, const ProgramBlock& block) {
     return {elementwise<bool>(c, block, [u, value, op](std::size_t i) { return blocks::compare(op, u[i], value[i]); }),
             {}};
   }
+  if (type == "EdgeDetect") {
+    auto detector = std::make_shared<blocks::EdgeDetector<T>>();
+    const Operand<T> u = c.input<T>(block, 0);
+    const blocks::Edge edge = edge_of(block);
+    bool* y = c.output<bool>(block, 0);
+    return {{[detector, u, y, edge] { *y = detector->detect(edge, u[0]); }, {}},
+            [detector] { detector->previous = T{0}; }};
+  }
   if (type == "Convert") {
     const Operand<T> u = c.input<T>(block, 0);
     return with_type(c.type_out(block), [&](auto tag) -> Compiled {
@@ -596,7 +604,7 @@ Compiled compile(Compiler& c, const ProgramBlock& block, const UserCodeLibrary* 
   if (type == "RateTransition") return rate_transition(c, block);
   if (type == "Logic") return logic(c, block);
   if (!hardware_resource(block).empty()) return hardware(c, block);
-  if (type == "Not" || type == "Compare" || type == "Convert") {
+  if (type == "Not" || type == "Compare" || type == "Convert" || type == "EdgeDetect") {
     return with_type(c.type_in(block), [&](auto tag) { return by_input_type<decltype(tag)>(c, block); });
   }
   return with_type(c.type_out(block), [&](auto tag) { return any_type<decltype(tag)>(c, block); });

@@ -69,6 +69,7 @@ class ProgramBuilder {
  public:
   explicit ProgramBuilder(const Model& model) : model_(model), flat_(model), rates_(analyse_rates(model)) {
     program_.model = &model;
+    program_.implied_blocks = flat_.implied_blocks;
   }
 
   ProgramBuild build(std::vector<Diagnostic> diagnostics) {
@@ -244,26 +245,21 @@ class ProgramBuilder {
     return text + "}";
   }
 
-  // An enabling signal is one boolean; edge triggers are not run yet, and must not run as if they were not there.
-  // `enables` counts the enabled subsystems around `blocks`.
+  // An enabling signal is one boolean. `enables` counts the enabling signals around `blocks` (an enabled subsystem's,
+  // then an edge-triggered one's detector output, as FlatModel adds them).
   void check_subsystems(const std::vector<Block>& blocks, const std::string& prefix, std::size_t enables,
                         std::vector<Diagnostic>& diagnostics) const {
     for (const Block& block : blocks) {
       if (block.type != "Subsystem") continue;
       const std::string path = prefix + block.name;
-      if (block.trigger.kind == Trigger::Kind::edge) {
-        diagnostics.push_back(
-            {Diagnostic::Severity::error, block.trigger.location,
-             "subsystem '" + path + "' has an edge trigger, which simulation and code " + "generation do not run yet",
-             "an enabled subsystem or an interrupt trigger can stand in for now"});
-      }
-      const std::size_t inner = enables + (block.enable.empty() ? 0 : 1);
+      const std::size_t inner =
+          enables + (block.enable.empty() ? 0 : 1) + (block.trigger.kind == Trigger::Kind::edge ? 1 : 0);
       if (!block.enable.empty()) {
         const auto member = std::find_if(program_.blocks.begin(), program_.blocks.end(), [&](const ProgramBlock& b) {
           return b.path.rfind(path + "/", 0) == 0 && b.enables.size() >= inner;
         });
         if (member != program_.blocks.end()) {
-          const ProgramSignal& signal = program_.signals[member->enables[inner - 1]];
+          const ProgramSignal& signal = program_.signals[member->enables[enables]];
           if (signal.type != SignalType{DataType::boolean, {}}) {
             diagnostics.push_back({Diagnostic::Severity::error, block.location,
                                    "type mismatch: subsystem '" + path + "' is enabled by signal '" + signal.name +
@@ -320,7 +316,6 @@ class ProgramBuilder {
         block.period_s = task.rate.kind == Rate::Kind::periodic ? task.period_us * 1e-6 : 0.0;
         laid_out.outputs.push_back(block_of.at(path));
       }
-      order_enabled_blocks(laid_out.outputs);
       program_.tasks.push_back(std::move(laid_out));
     }
     for (const std::string& path : constants) {
@@ -347,9 +342,10 @@ class ProgramBuilder {
     }
   }
 
-  // Constant blocks that read a tunable parameter, directly or through other constant blocks, must see it change
-  // like every other reader: they run first in the fastest periodic task (a base-rate task of their own if the model
-  // has none). The rest stay `constants`, computed once. A Constant naming the parameter is the parameter itself.
+  // Constant blocks that read a tunable parameter (or are enabled by one), directly or through other constant blocks,
+  // must see it change like every other reader: they run first in the base-rate task. The rest stay `constants`,
+  // computed once. A Constant naming the parameter is the parameter itself. Every program gets a base-rate task, even
+  // an empty one: the executive's task table starts with it (duet/rt/task_table.hpp).
   void move_tunable_constants(const std::map<std::string, std::size_t>& block_of, std::vector<Task>& tasks,
                               std::vector<std::string>& constants) const {
     std::set<std::size_t> tunable;  // signals
@@ -363,8 +359,9 @@ class ProgramBuilder {
       const bool reads_parameter = std::any_of(block.arguments.begin(), block.arguments.end(), [](const auto& entry) {
         return entry.second.kind == Argument::Kind::parameter;
       });
-      const bool reads_tunable = std::any_of(block.inputs.begin(), block.inputs.end(),
-                                             [&tunable](std::size_t input) { return tunable.count(input) != 0; });
+      const auto is_tunable = [&tunable](std::size_t signal) { return tunable.count(signal) != 0; };
+      const bool reads_tunable = std::any_of(block.inputs.begin(), block.inputs.end(), is_tunable) ||
+                                 std::any_of(block.enables.begin(), block.enables.end(), is_tunable);
       if (is_parameter || !(reads_parameter || reads_tunable)) {
         constants.push_back(path);
         continue;
@@ -378,55 +375,6 @@ class ProgramBuilder {
     }
     if (moved.empty()) return;
     tasks.front().blocks.insert(tasks.front().blocks.begin(), moved.begin(), moved.end());
-  }
-
-  // A block of an enabled subsystem reads its enabling signal in both phases: that signal's driver runs before it
-  // when they share a task. Otherwise the task's order (rates.hpp) stands: a stable topological sort of the blocks
-  // by their direct-feedthrough inputs and their enables; blocks of a cycle keep their place at the end.
-  void order_enabled_blocks(std::vector<std::size_t>& outputs) const {
-    if (std::none_of(outputs.begin(), outputs.end(),
-                     [this](std::size_t block) { return !program_.blocks[block].enables.empty(); })) {
-      return;
-    }
-    std::map<std::size_t, std::size_t> position;  // block -> place in the task
-    for (std::size_t k = 0; k < outputs.size(); ++k) position[outputs[k]] = k;
-    std::vector<std::vector<std::size_t>> next(outputs.size());
-    std::vector<std::size_t> waiting(outputs.size(), 0);
-    const auto depends = [&](std::size_t reader, std::size_t signal) {
-      const auto driver = position.find(program_.signals[signal].driver);
-      if (driver == position.end() || driver->second == reader) return;
-      next[driver->second].push_back(reader);
-      ++waiting[reader];
-    };
-    for (std::size_t k = 0; k < outputs.size(); ++k) {
-      const ProgramBlock& block = program_.blocks[outputs[k]];
-      const BlockType* type = find_block_type(block.type());
-      const bool feedthrough =
-          block.block->code ? block.block->code->direct_feedthrough : type == nullptr || type->direct_feedthrough;
-      if (feedthrough) {
-        for (const std::size_t input : block.inputs) depends(k, input);
-      }
-      for (const std::size_t enable : block.enables) depends(k, enable);
-    }
-    std::set<std::size_t> ready;
-    for (std::size_t k = 0; k < outputs.size(); ++k) {
-      if (waiting[k] == 0) ready.insert(k);
-    }
-    std::vector<std::size_t> order;
-    std::vector<bool> placed(outputs.size(), false);
-    while (!ready.empty()) {
-      const std::size_t k = *ready.begin();
-      ready.erase(ready.begin());
-      order.push_back(outputs[k]);
-      placed[k] = true;
-      for (const std::size_t reader : next[k]) {
-        if (--waiting[reader] == 0) ready.insert(reader);
-      }
-    }
-    for (std::size_t k = 0; k < outputs.size(); ++k) {
-      if (!placed[k]) order.push_back(outputs[k]);
-    }
-    outputs = std::move(order);
   }
 
   const Model& model_;

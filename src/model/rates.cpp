@@ -29,6 +29,15 @@ std::vector<std::string> execution_order(const FlatModel& flat, const std::vecto
       ++waiting[reader];
     }
   }
+  // Whatever enables a block (an enabled or triggered subsystem) is computed before it, feedthrough or not.
+  for (const std::size_t reader : members) {
+    for (const std::string& enable : flat.nodes[reader].enables) {
+      const auto driver = driver_of.find(enable);
+      if (driver == driver_of.end() || waiting.count(driver->second) == 0 || driver->second == reader) continue;
+      next[driver->second].push_back(reader);
+      ++waiting[reader];
+    }
+  }
   std::set<std::size_t> ready;
   for (const auto& [member, count] : waiting) {
     if (count == 0) ready.insert(member);
@@ -59,7 +68,7 @@ Rate declared(const Node& node) {
     case Period::Kind::inherited: break;
   }
   if (node.block->type == "Constant") return {Rate::Kind::constant, 0, {}};
-  if (node.inputs.empty()) return {Rate::Kind::periodic, 1, {}};  // a source: the base rate
+  if (node.inputs.empty() && node.enables.empty()) return {Rate::Kind::periodic, 1, {}};  // a source: the base rate
   return {};
 }
 
@@ -95,7 +104,9 @@ RateAnalysis analyse_rates(const Model& model) {
       if (node.rate.kind != Rate::Kind::unknown || node.block->type == "RateTransition") continue;
       bool all_constant = true;
       bool open = false;
-      for (const Input& input : node.inputs) {
+      std::vector<Input> sources = node.inputs;  // what it reads: its inputs and what enables it
+      for (const std::string& enable : node.enables) sources.push_back({enable, node.block->location});
+      for (const Input& input : sources) {
         const Rate rate = rate_of_driver(input);
         if (rate.kind == Rate::Kind::unknown) open = true;
         if (rate.kind != Rate::Kind::constant && rate.kind != Rate::Kind::unknown) {
@@ -106,7 +117,8 @@ RateAnalysis analyse_rates(const Model& model) {
         all_constant = all_constant && rate.kind == Rate::Kind::constant;
       }
       if (node.rate.kind == Rate::Kind::unknown && !open && all_constant) {
-        node.rate = {Rate::Kind::constant, 0, {}};
+        // A source enabled by a constant is still a source: it runs at the base rate, not once.
+        node.rate = node.inputs.empty() ? Rate{Rate::Kind::periodic, 1, {}} : Rate{Rate::Kind::constant, 0, {}};
         changed = true;
       }
     }
@@ -134,7 +146,9 @@ RateAnalysis analyse_rates(const Model& model) {
   for (const Node& node : flat.nodes) {
     result.block_rates[node.path] = node.rate;
     if (node.block->type == "RateTransition") continue;  // it is where rates may meet
-    for (const Input& input : node.inputs) {
+    std::vector<Input> sources = node.inputs;
+    for (const std::string& enable : node.enables) sources.push_back({enable, node.block->location});
+    for (const Input& input : sources) {
       const auto driver = driver_of.find(input.signal);
       if (driver == driver_of.end()) continue;  // undriven: validation says so
       const Node& source = flat.nodes[driver->second];

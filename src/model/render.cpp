@@ -70,6 +70,7 @@ std::string to_dot(const Model& model) {
     }
   }
   for (const Node& node : flat.nodes) {
+    if (flat.is_implied(node)) continue;  // the trigger is drawn on the subsystem's frame
     for (std::size_t k = 0; k < node.inputs.size(); ++k) {
       const auto driver = driver_of.find(node.inputs[k].signal);
       if (driver == driver_of.end()) continue;

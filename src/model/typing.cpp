@@ -86,6 +86,8 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
   } else if (type == "Constant") {
     const Argument* value = block.argument("value");
     if (value != nullptr) y = argument_type(program, *value, word_type(block).value_or(DataType::float64));
+  } else if (type == "EdgeDetect") {
+    y = SignalType{DataType::boolean, {}};
   } else if (type == "Not" || type == "Compare") {
     y = boolean_like(first_known(inputs, {0}));
   } else if (type == "Logic") {

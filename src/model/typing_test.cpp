@@ -231,12 +231,6 @@ const Case cases[] = {
      "      - {name: c, type: Counter, parameters: {limit: 9}, outputs: {y: m}}\n",
      "m.yaml:7:5: error: type mismatch: subsystem 's' is enabled by signal 'level', which is double (an enabling "
      "signal is one boolean: make it with a Compare block)\n"},
-    {"edge_triggered_subsystem", "",
-     "  - {name: pin, type: GpioIn, parameters: {pin: PA0}, outputs: {y: pressed}}\n"
-     "  - name: s\n    type: Subsystem\n    trigger: {edge: rising, signal: pressed}\n    blocks:\n"
-     "      - {name: c, type: Counter, parameters: {limit: 9}, outputs: {y: n}}\n",
-     "m.yaml:8:14: error: subsystem 's' has an edge trigger, which simulation and generation do not run yet (an "
-     "enabled subsystem or an interrupt trigger can stand in for now)\n"},
 };
 
 class Mistyped : public ::testing::TestWithParam<Case> {};

@@ -104,6 +104,11 @@ class Validator {
                 hint_for(parameter.reference, names_, "define it under parameters or constants"));
         }
       }
+      // An enabled or edge-triggered subsystem reads its enabling or triggering signal from here.
+      if (!block.enable.empty()) readers.push_back({block.name, "enable", block.enable, block.location});
+      if (block.trigger.kind == Trigger::Kind::edge) {
+        readers.push_back({block.name, "trigger", block.trigger.signal, block.trigger.location});
+      }
       // A subsystem's outward connections: its inputs read the parent's signals, its outputs drive them.
       for (const Connection& input : block.inputs)
         readers.push_back({block.name, input.port, input.signal, input.location});

@@ -11,7 +11,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -86,6 +88,9 @@ struct Program {
   std::vector<ProgramBlock> blocks;
   std::vector<ProgramTask> tasks;            // periodic tasks fastest first, then interrupt tasks
   std::vector<std::size_t> initial_outputs;  // constant blocks, in execution order
+  // Blocks the model does not spell out but implies (an edge-triggered subsystem's edge detector); ProgramBlock::block
+  // points into it for those.
+  std::shared_ptr<const std::deque<Block>> implied_blocks;
 
   [[nodiscard]] const Parameter& parameter(const Argument& argument) const {
     return model->parameters[argument.parameter];
