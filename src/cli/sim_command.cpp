@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "duet/model/model_file.hpp"
+#include "duet/model/model_plant.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/plant/plant.hpp"
@@ -46,7 +47,14 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
     streams.err << model::format(options.file, diagnostic) << '\n';
   }
   if (!build.program) return ExitCode::failure;
-  auto plant = plant::make_plant(options.plant, options.seed);
+  // A plant by name, or a model file that is the plant.
+  auto plant = [&]() -> Result<std::unique_ptr<plant::Plant>> {
+    if (!options.plant.ends_with(".yaml")) return plant::make_plant(options.plant, options.seed);
+    auto loaded = model::ModelPlant::load(options.plant);
+    if (!loaded) return Failure{loaded.error()};
+    for (const std::string& warning : loaded.value()->warnings()) streams.err << warning << '\n';
+    return std::unique_ptr<plant::Plant>{std::move(loaded).value()};
+  }();
   if (!plant) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
@@ -87,7 +95,10 @@ std::string plant_list() {
 Action define_sim_command(CLI::App& command) {
   auto options = std::make_shared<SimOptions>();
   command.add_option("model", options->file, "The model file (docs/MODELS.md)")->required();
-  command.add_option("--plant", options->plant, "What the model's hardware blocks are connected to: " + plant_list())
+  command
+      .add_option("--plant", options->plant,
+                  "What the model's hardware blocks are connected to: " + plant_list() +
+                      ", or a model file (.yaml) whose PlantInput and PlantOutput blocks meet them")
       ->capture_default_str();
   command.add_option("--duration", options->duration_s, "Simulated time in seconds")
       ->capture_default_str()

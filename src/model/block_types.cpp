@@ -49,6 +49,9 @@ const std::vector<BlockType> table{
     {"AdcDma", {}, {"samples"}, {{"adc"}, {"channel"}, {"count"}}},
     {"IpcSend", {}, {}, {{"channel"}}, true, true},
     {"IpcReceive", {}, {"y"}, {{"channel"}, {"size"}}},
+    // A plant that is a model (docs/MODELS.md): what the controller writes to a resource, and what it reads from one.
+    {"PlantInput", {}, {"y"}, {{"resource"}, {"size", false}}},
+    {"PlantOutput", {"u"}, {}, {{"resource"}}},
     // Instances declare their own ports.
     {"Subsystem", {}, {}, {}, true, false, true},
     {"Code", {}, {}, {}, true, false, true},
@@ -60,7 +63,7 @@ std::span<const BlockType> block_types() { return table; }
 
 bool is_word_parameter(std::string_view parameter) {
   constexpr std::string_view words[] = {"pin",      "timer", "spi",  "adc",   "line", "channel",
-                                        "operator", "mode",  "type", "signs", "edge"};
+                                        "operator", "mode",  "type", "signs", "edge", "resource"};
   return std::find(std::begin(words), std::end(words), parameter) != std::end(words);
 }
 

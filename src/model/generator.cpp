@@ -497,8 +497,8 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
             (values.empty() ? "" : ", ") + std::string{"duet::blocks::convert<double>("} + element(signal, i) + ")";
       }
     }
-    return text + "    const double values[] = {" + values + "};\n    duet::hardware::write(" + resource +
-           ", values);\n  }\n";
+    text += "    const double written[] = {" + values + "};\n    duet::hardware::write(" + resource + ", written);\n";
+    if (block.outputs.empty()) return text + "  }\n";  // an SpiDma writes, then reads what came back
   }
   std::size_t count = 0;
   for (const std::size_t signal : block.outputs) count += program_.signals[signal].type.elements();

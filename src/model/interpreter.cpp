@@ -644,6 +644,7 @@ std::string hardware_resource(const ProgramBlock& block) {
   if (type == "Exti") return "exti:" + text("line");
   if (type == "AdcDma") return "adc:" + text("adc") + "/" + text("channel");
   if (type == "IpcSend" || type == "IpcReceive") return "ipc:" + text("channel");
+  if (type == "PlantInput" || type == "PlantOutput") return text("resource");
   return {};
 }
 

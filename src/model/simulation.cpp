@@ -5,11 +5,10 @@
 #include <cmath>
 #include <memory>
 #include <string_view>
+#include <utility>
 
-#include "duet/host/lock_step_port.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
-#include "duet/rt/executive.hpp"
 #include "duet/support/closest_word.hpp"
 
 namespace duet::model {
@@ -88,22 +87,17 @@ Result<TaskPriorities> task_priorities(const Program& program) {
   return result;
 }
 
-Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, const SimulationOptions& options) {
+Result<std::unique_ptr<ModelRunner>> ModelRunner::create(const Program& program, plant::Plant& plant) {
   if (program.tasks.size() > max_tasks) return Failure{"the model has more than 16 tasks"};
-  if (!(options.duration_s >= 0) || !std::isfinite(options.duration_s)) {
-    return Failure{"the duration must be a number of seconds, 0 or more"};
-  }
-  auto signals = recorded_signals(program, options);
-  if (!signals) return Failure{signals.error()};
   auto priorities = task_priorities(program);
   if (!priorities) return Failure{priorities.error()};
+  std::unique_ptr<ModelRunner> runner{new ModelRunner{program}};
   auto user_code = UserCodeLibrary::build(program);
   if (!user_code) return Failure{user_code.error()};
-  auto created = Interpreter::create(program, plant, user_code.value().get());
+  runner->user_code_ = std::move(user_code).value();
+  auto created = Interpreter::create(program, plant, runner->user_code_.get());
   if (!created) return Failure{created.error()};
-  Interpreter& interpreter = *created.value();
-
-  std::vector<rt::Task> tasks;
+  runner->interpreter_ = std::move(created).value();
   for (std::size_t index = 0; index < program.tasks.size(); ++index) {
     const ProgramTask& task = program.tasks[index];
     rt::Task entry{.name = task.name, .priority = priorities.value().priorities[index], .entry = entries[index]};
@@ -112,29 +106,69 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
     } else {
       entry.period_ticks = static_cast<std::uint32_t>(task.rate.multiple);
     }
-    tasks.push_back(entry);
+    runner->tasks_.push_back(entry);
   }
-  if (tasks.empty()) {  // a model of constants only still ticks, so that its signals are recorded over time
-    tasks.push_back({.name = "rate 1", .priority = {1, 0}, .entry = nothing});
+  if (runner->tasks_.empty()) {  // a model of constants only still ticks, so that its signals are recorded over time
+    runner->tasks_.push_back({.name = "rate 1", .priority = {1, 0}, .entry = nothing});
   }
-  const double base_period_s = program.model->base_period_us * 1e-6;
-  const rt::ModelDescription description{
-      .name = program.model->name,
-      .base_period_ns = static_cast<std::uint32_t>(std::llround(base_period_s * 1e9)),
-      .tasks = tasks,
-      .initialize = nothing,
-      .terminate = nothing};
-  host::LockStepPort port{description};
-  rt::Executive<host::LockStepPort, max_tasks> executive{description, port};
-  port.attach(executive);
-  running = &interpreter;
-  interpreter.initialize();
-  if (const rt::TaskTableError error = executive.initialize(); error != rt::TaskTableError::none) {
-    running = nullptr;
+  runner->description_ = {.name = program.model->name,
+                          .base_period_ns = static_cast<std::uint32_t>(std::llround(runner->base_period_s() * 1e9)),
+                          .tasks = runner->tasks_,
+                          .initialize = nothing,
+                          .terminate = nothing};
+  runner->port_ = std::make_unique<host::LockStepPort>(runner->description_);
+  runner->executive_ = std::make_unique<Executive>(runner->description_, *runner->port_);
+  runner->port_->attach(*runner->executive_);
+  runner->interpreter_->initialize();
+  if (const rt::TaskTableError error = runner->executive_->initialize(); error != rt::TaskTableError::none) {
     return Failure{"the executive refused the model's task table (error " + std::to_string(static_cast<int>(error)) +
                    ")"};
   }
-  (void)executive.begin();
+  (void)runner->executive_->begin();
+  return runner;
+}
+
+ModelRunner::ModelRunner(const Program& program) : program_(program) {}
+
+ModelRunner::~ModelRunner() {
+  if (executive_) {
+    executive_->request_stop(rt::StopReason::external);
+    executive_->end();
+  }
+}
+
+double ModelRunner::base_period_s() const { return program_.model->base_period_us * 1e-6; }
+
+// The trampolines run whichever interpreter is running: this one, for the length of the call (a plant model ticks
+// between the ticks of the model it is the plant of).
+void ModelRunner::tick() {
+  Interpreter* const outer = std::exchange(running, interpreter_.get());
+  port_->advance(1);
+  running = outer;
+}
+
+void ModelRunner::raise(std::string_view interrupt) {
+  Interpreter* const outer = std::exchange(running, interpreter_.get());
+  for (std::size_t task = 0; task < program_.tasks.size(); ++task) {
+    if (program_.tasks[task].rate.kind == Rate::Kind::interrupt && program_.tasks[task].rate.interrupt == interrupt) {
+      port_->raise(task);
+    }
+  }
+  running = outer;
+}
+
+std::uint32_t ModelRunner::activations(std::size_t task) const { return executive_->statistics(task).activations; }
+
+Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, const SimulationOptions& options) {
+  if (!(options.duration_s >= 0) || !std::isfinite(options.duration_s)) {
+    return Failure{"the duration must be a number of seconds, 0 or more"};
+  }
+  auto signals = recorded_signals(program, options);
+  if (!signals) return Failure{signals.error()};
+  auto created = ModelRunner::create(program, plant);
+  if (!created) return Failure{created.error()};
+  ModelRunner& runner = *created.value();
+  Interpreter& interpreter = runner.interpreter();
 
   SimulationResult result;
   std::vector<Column> columns;
@@ -148,31 +182,22 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
     }
   }
   result.recording.columns.resize(columns.size());
+  const double base_period_s = runner.base_period_s();
   const auto ticks = static_cast<std::uint64_t>(std::floor(options.duration_s / base_period_s + 1e-9)) + 1U;
-  const auto raise = [&](std::string_view interrupt) {
-    for (std::size_t task = 0; task < program.tasks.size(); ++task) {
-      if (program.tasks[task].rate.kind == Rate::Kind::interrupt && program.tasks[task].rate.interrupt == interrupt) {
-        port.raise(task);
-      }
-    }
-  };
+  const auto raise = [&runner](std::string_view interrupt) { runner.raise(interrupt); };
   for (std::uint64_t tick = 0; tick < ticks; ++tick) {
     const double now = static_cast<double>(tick) * base_period_s;
     if (options.before_tick) options.before_tick(tick, interpreter);
     plant.advance(now, raise);
-    port.advance(1);
+    runner.tick();
     result.recording.time_s.push_back(now);
     for (std::size_t k = 0; k < columns.size(); ++k) {
       result.recording.columns[k].push_back(interpreter.signal(columns[k].signal, columns[k].element));
     }
   }
-  executive.request_stop(rt::StopReason::external);
-  executive.end();
-  running = nullptr;
   result.ticks = ticks;
-  for (std::size_t task = 0; task < program.tasks.size(); ++task) {
-    result.activations.push_back(executive.statistics(task).activations);
-  }
+  for (std::size_t task = 0; task < program.tasks.size(); ++task)
+    result.activations.push_back(runner.activations(task));
   return result;
 }
 

@@ -555,6 +555,26 @@ TEST(SimulationSubsystems, AnEnabledSubsystemHoldsWhileDisabled) {
   EXPECT_EQ(columns.at("counted"), (Column{0, 1, 1, 1, 2, 2, 3}));
 }
 
+TEST(SimulationSubsystems, ASubsystemEnabledByATunableParameterStartsWhenItIsSet) {
+  const Built built{
+      "  - {name: start, type: Constant, parameters: {value: playing}, outputs: {y: playing_now}}\n"
+      "  - name: play\n    type: Subsystem\n    enable: playing_now\n    outputs: {index: position}\n"
+      "    blocks:\n"
+      "      - {name: counter, type: Counter, parameters: {limit: 100}, outputs: {y: index}}\n"
+      "  - name: always\n    type: Subsystem\n    enable: yes\n    outputs: {index: ticks}\n"
+      "    blocks:\n"
+      "      - {name: counter, type: Counter, parameters: {limit: 100}, outputs: {y: index}}\n"
+      "  - {name: on, type: Constant, parameters: {value: true, type: boolean}, outputs: {y: yes}}\n",
+      "parameters:\n  playing: {value: false, type: boolean}\n"};
+  const std::size_t playing = built.parameter("playing");
+  plant::Loopback plant;
+  const auto columns = run(built, plant, {"position", "ticks"}, 6, [playing](std::uint64_t tick, Interpreter& model) {
+    if (tick == 2) model.set_parameter(playing, 0, 1);
+  });
+  EXPECT_EQ(columns.at("position"), (Column{0, 0, 0, 1, 2, 3}));
+  EXPECT_EQ(columns.at("ticks"), (Column{0, 1, 2, 3, 4, 5}));
+}
+
 TEST(SimulationHardware, GpioThroughTheLoopbackPlant) {
   const Built built{std::string{truth_table} +
                         "  - {name: led, type: GpioOut, parameters: {pin: LED0}, inputs: {u: bit}}\n"

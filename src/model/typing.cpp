@@ -43,6 +43,11 @@ std::size_t size_argument(const ProgramBlock& block, const char* name) {
   return static_cast<std::size_t>(std::max(1.0, argument->value.elements.front()));
 }
 
+// The shape of `count` elements: one is a scalar.
+std::vector<std::size_t> sized(std::size_t count) {
+  return count > 1 ? std::vector<std::size_t>{count} : std::vector<std::size_t>{};
+}
+
 // The type of a value a parameter gives: a tunable parameter's own, a literal's is the block's (`fallback`).
 SignalType argument_type(const Program& program, const Argument& argument, DataType fallback) {
   if (argument.kind == Argument::Kind::parameter) {
@@ -119,9 +124,11 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
     outputs[0] = SignalType{DataType::uint32, {}};
     if (outputs.size() > 1) outputs[1] = SignalType{DataType::boolean, {}};
   } else if (type == "SpiDma" || type == "IpcReceive") {
-    y = SignalType{DataType::uint8, {size_argument(block, "size")}};
+    y = SignalType{DataType::uint8, sized(size_argument(block, "size"))};
+  } else if (type == "PlantInput") {
+    y = SignalType{DataType::float64, sized(size_argument(block, "size"))};
   } else if (type == "AdcDma") {
-    y = SignalType{DataType::uint16, {size_argument(block, "count")}};
+    y = SignalType{DataType::uint16, sized(size_argument(block, "count"))};
   } else {  // Gain, Sum, Product, Abs, Saturation, Atan2, delays, integrators, PID, RateTransition: as their inputs
     y = first_known(inputs);
   }

@@ -7,12 +7,16 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "duet/host/lock_step_port.hpp"
 #include "duet/model/interpreter.hpp"
 #include "duet/model/program.hpp"
 #include "duet/plant/plant.hpp"
+#include "duet/rt/executive.hpp"
 #include "duet/rt/task_table.hpp"
 #include "duet/support/result.hpp"
 
@@ -43,6 +47,35 @@ struct SimulationResult {
 
 [[nodiscard]] Result<SimulationResult> simulate(const Program& program, plant::Plant& plant,
                                                 const SimulationOptions& options);
+
+// A program on the executive in lock-step, one base tick at a time: what simulate() runs, and what runs a plant
+// that is itself a model (model_plant.hpp).
+class ModelRunner {
+ public:
+  // `program` and `plant` must outlive the runner.
+  static Result<std::unique_ptr<ModelRunner>> create(const Program& program, plant::Plant& plant);
+  ModelRunner(const ModelRunner&) = delete;
+  ModelRunner& operator=(const ModelRunner&) = delete;
+  ~ModelRunner();
+
+  void tick();                             // one base period: the base rate and whatever else is due
+  void raise(std::string_view interrupt);  // runs the interrupt tasks that interrupt triggers, now
+  [[nodiscard]] Interpreter& interpreter() { return *interpreter_; }
+  [[nodiscard]] double base_period_s() const;
+  [[nodiscard]] std::uint32_t activations(std::size_t task) const;
+
+ private:
+  using Executive = rt::Executive<host::LockStepPort, 16>;
+  explicit ModelRunner(const Program& program);
+
+  const Program& program_;
+  std::unique_ptr<UserCodeLibrary> user_code_;
+  std::unique_ptr<Interpreter> interpreter_;
+  std::vector<rt::Task> tasks_;
+  rt::ModelDescription description_;
+  std::unique_ptr<host::LockStepPort> port_;
+  std::unique_ptr<Executive> executive_;
+};
 
 // The executive's view of the program's tasks, in the task table's order (duet/rt/task_table.hpp): periodic rates
 // fastest first, then interrupt tasks. Priorities: an interrupt task's group is the model's; the periodic rates take
