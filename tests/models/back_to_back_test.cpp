@@ -16,6 +16,7 @@
 #include "duet/support/text_file.hpp"
 #include "duet/xcp/host/a2l.hpp"
 #include "examples.hpp"
+#include "pid_demo.hpp"
 #include "step_time.hpp"
 #include "transfer_test.hpp"
 
@@ -101,6 +102,15 @@ Recording run_generated(const Example& example, LoggingPlant& plant) {
   return recording;
 }
 
+// pid_demo's parameters, numbered as in pid_demo.yaml.
+namespace pid_demo_parameter {
+constexpr std::size_t Kp = 0;
+constexpr std::size_t trim = 6;
+constexpr std::size_t stall_limit = 7;
+constexpr std::size_t halt = 8;
+constexpr std::size_t disturbance = 11;
+}  // namespace pid_demo_parameter
+
 std::vector<Example> examples() {
   std::vector<std::uint16_t> table(4096);
   std::mt19937 random{2026};
@@ -126,6 +136,30 @@ std::vector<Example> examples() {
            transfer_test::parameter_page = reinterpret_cast<const std::uint8_t*>(&transfer_test::reference_parameters);
          if (tick == 3500)
            transfer_test::parameter_page = reinterpret_cast<const std::uint8_t*>(&transfer_test::parameters);
+       }},
+      {"pid_demo", pid_demo::description, &pid_demo::signals, 6000,
+       // A calibration session: a gain and the trim tuned, the operator's stop for 400 ticks, the reference page for
+       // 500, then a shorter stall limit and a load the motor cannot hold: the stall stops it, then the angle limit.
+       [](std::uint64_t tick, Interpreter& model) {
+         if (tick == 1000) model.set_parameter(pid_demo_parameter::Kp, 0, 0.03);
+         if (tick == 2000) model.set_parameter(pid_demo_parameter::trim, 0, -0.3);
+         if (tick == 2600) model.set_parameter(pid_demo_parameter::halt, 0, 1);
+         if (tick == 3000) model.set_parameter(pid_demo_parameter::halt, 0, 0);
+         if (tick == 3500) model.use_reference_page(true);
+         if (tick == 4000) model.use_reference_page(false);
+         if (tick == 4500) model.set_parameter(pid_demo_parameter::stall_limit, 0, 0.2);
+         if (tick == 4500) model.set_parameter(pid_demo_parameter::disturbance, 0, 800);
+       },
+       [](std::uint64_t tick) {
+         if (tick == 1000) pid_demo::parameters.Kp = 0.03F;
+         if (tick == 2000) pid_demo::parameters.trim = -0.3F;
+         if (tick == 2600) pid_demo::parameters.halt = true;
+         if (tick == 3000) pid_demo::parameters.halt = false;
+         if (tick == 3500)
+           pid_demo::parameter_page = reinterpret_cast<const std::uint8_t*>(&pid_demo::reference_parameters);
+         if (tick == 4000) pid_demo::parameter_page = reinterpret_cast<const std::uint8_t*>(&pid_demo::parameters);
+         if (tick == 4500) pid_demo::parameters.stall_limit = 0.2F;
+         if (tick == 4500) pid_demo::parameters.disturbance = 800.0F;
        }},
   };
 }
@@ -166,7 +200,7 @@ TEST_P(BackToBack, GeneratedCodeComputesWhatTheInterpreterComputes) {
   EXPECT_TRUE(changes);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, BackToBack, testing::Range<std::size_t>(0, 2),
+INSTANTIATE_TEST_SUITE_P(Examples, BackToBack, testing::Range<std::size_t>(0, 3),
                          [](const testing::TestParamInfo<std::size_t>& parameter) {
                            return examples()[parameter.param].name;
                          });
