@@ -12,6 +12,9 @@ set(CMAKE_C_FLAGS_INIT "${DUET_CORTEX_M4F_FLAGS} -ffunction-sections -fdata-sect
 set(CMAKE_CXX_FLAGS_INIT
     "${DUET_CORTEX_M4F_FLAGS} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-nostdlib -Wl,--gc-sections -Wl,--print-memory-usage")
+# libgcc last on every link line, after every library a firmware links (its soft-float and 64-bit helpers).
+set(CMAKE_C_STANDARD_LIBRARIES "-lgcc")
+set(CMAKE_CXX_STANDARD_LIBRARIES "-lgcc")
 
 foreach(tool objcopy objdump size readelf)
   string(TOUPPER "${tool}" variable)

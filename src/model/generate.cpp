@@ -238,9 +238,11 @@ class FileWriter {
     text += (reads_parameters(constants) ? read_page : "") + constants;
     text += "}\n\nvoid terminate() {}\n";
     for (const ProgramTask& task : program_.tasks) {
-      std::string body;
+      const auto index = static_cast<std::size_t>(&task - program_.tasks.data());
+      std::string body = generator_.task_prologue(index);
       for (const std::size_t block : task.outputs) body += generator_.output_phase(block);
       for (const std::size_t block : task.updates) body += generator_.update_phase(block);
+      body += generator_.task_epilogue(index);
       text += "\nvoid " + task_function(task) + "() {\n" + (reads_parameters(body) ? read_page : "") + body + "}\n";
     }
     text += "\n// The task table fits the executive (duet/rt/task_table.hpp).\n";

@@ -88,7 +88,8 @@ std::string literal(DataType type, double value) {
   });
 }
 
-Generator::Generator(const Program& program) : program_(program), member_(program.signals.size(), false) {
+Generator::Generator(const Program& program)
+    : program_(program), member_(program.signals.size(), false), inlined_(program.signals.size()) {
   for (std::size_t index = 0; index < program.signals.size(); ++index) {
     const ProgramSignal& signal = program.signals[index];
     const ProgramBlock& driver = program.blocks[signal.driver];
@@ -102,6 +103,19 @@ Generator::Generator(const Program& program) : program_(program), member_(progra
       }
     }
     member_[index] = member && !signal.parameter;
+    // A scalar Constant that is a literal (or a model constant) and that nothing measures is written where it is
+    // read, as one would by hand; a block that needs its address (MatrixMultiply, Selector) keeps it in memory.
+    const Argument* value = driver.argument("value");
+    const bool addressed =
+        std::any_of(program.blocks.begin(), program.blocks.end(), [index](const ProgramBlock& block) {
+          return (block.type() == "MatrixMultiply" || block.type() == "Selector") &&
+                 std::find(block.inputs.begin(), block.inputs.end(), index) != block.inputs.end();
+        });
+    if (driver.type() == "Constant" && value != nullptr && value->kind == Argument::Kind::literal &&
+        value->value.elements.size() == 1 && !signal.measurable && driver.enables.empty() && !addressed) {
+      member_[index] = false;
+      inlined_[index] = literal(signal.type.type, value->value.elements[0]);
+    }
   }
 }
 
@@ -124,6 +138,7 @@ std::vector<Field> Generator::parameter_fields() const {
 }
 
 std::string Generator::storage(std::size_t signal) const {
+  if (inlined_[signal]) return *inlined_[signal];
   const ProgramSignal& info = program_.signals[signal];
   if (info.parameter) return "p." + program_.model->parameters[*info.parameter].name;
   return (member_[signal] ? "signals." : "") + info.identifier;
@@ -169,6 +184,8 @@ std::string Generator::state(const ProgramBlock& block, const std::string& index
 
 std::string Generator::state_members() const {
   std::string text;
+  for (const auto& [fast, ratio] : shared_countdowns())
+    text += "  std::uint32_t " + shared_countdown(fast, ratio) + ";\n";
   for (const ProgramBlock& block : program_.blocks) {
     if (block.block->code) {
       text += "  code::" + block.identifier + "::State " + block.identifier + ";\n";
@@ -187,7 +204,9 @@ std::string Generator::state_members() const {
                          : transfer.kind == Transfer::Kind::slow_to_fast ? "SlowToFast"
                                                                          : "AsyncTransfer";
       text += "  duet::rt::" + std::string{kind} + "<" + value + "> " + block.identifier + ";\n";
-      if (transfer.kind != Transfer::Kind::latest) text += "  std::uint32_t " + block.identifier + "_countdown;\n";
+      if (transfer.kind != Transfer::Kind::latest && !block.enables.empty()) {
+        text += "  std::uint32_t " + block.identifier + "_countdown;\n";
+      }
       continue;
     }
     if (block.type() == "EdgeDetect") {  // remembers its input, of the input's type
@@ -202,6 +221,7 @@ std::string Generator::state_members() const {
 
 std::string Generator::state_resets() const {
   std::string text;
+  for (const auto& [fast, ratio] : shared_countdowns()) text += "  state." + shared_countdown(fast, ratio) + " = 0;\n";
   for (const ProgramBlock& block : program_.blocks) {
     if (block.block->code) {
       for (const StateVariable& variable : block.block->code->state) {
@@ -224,7 +244,7 @@ std::string Generator::state_resets() const {
         initial += (i == 0 ? "" : ", ") + argument(block, "initial", 0, type.type, std::to_string(i));
       }
       text += "  state." + block.identifier + ".reset(" + (n > 1 ? "{" + initial + "}" : initial) + ");\n";
-      if (transfer_of(program_, block).kind != Transfer::Kind::latest) {
+      if (transfer_of(program_, block).kind != Transfer::Kind::latest && !block.enables.empty()) {
         text += "  state." + block.identifier + "_countdown = 0;\n";
       }
     } else if (kind == "UnitDelay" || kind == "DiscreteIntegrator") {
@@ -269,7 +289,7 @@ std::string Generator::block_constants() const {
 std::string Generator::declare_outputs(const ProgramBlock& block) const {
   std::string text;
   for (const std::size_t signal : block.outputs) {
-    if (member_[signal] || program_.signals[signal].parameter) continue;
+    if (member_[signal] || program_.signals[signal].parameter || inlined_[signal]) continue;
     const SignalType& type = program_.signals[signal].type;
     text += "  " + type_of(type.type) + " " + program_.signals[signal].identifier +
             (type.elements() > 1 ? "[" + std::to_string(type.elements()) + "]" : "") + "{};\n";
@@ -318,7 +338,7 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
   const auto in = [&](std::size_t k, const std::string& index) { return element(block.inputs[k], index); };
   const auto assign = [&](const std::string& value) { return for_each(n, element(y, "i") + " = " + value + ";"); };
   if (type == "Constant") {
-    if (program_.signals[y].parameter) return {};
+    if (program_.signals[y].parameter || inlined_[y]) return {};  // read where it is used
     return assign(argument(block, "value", 0, t, "i"));
   }
   if (type == "Gain") return assign("duet::blocks::gain(" + in(0, "i") + ", " + argument(block, "k", 1, t, "i") + ")");
@@ -429,6 +449,10 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
   if (type == "UnitDelay") return for_each(n, state(block, "i") + ".update(" + in("i") + ");");
   if (type == "Counter")
     return for_each(n, state(block, "i") + ".update(" + argument(block, "limit", 0, t, "i") + ");");
+  if (type == "DiscreteIntegrator" && block.argument("lower") == nullptr && block.argument("upper") == nullptr) {
+    return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
+                           period + ");");  // unlimited: saturating at infinity changes nothing
+  }
   if (type == "DiscreteIntegrator") {
     return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
                            period + ", " + argument(block, "lower", -infinity, t, "i") + ", " +
@@ -514,22 +538,68 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
   return text + "  }\n";
 }
 
-// The release countdown of the faster task, as the interpreter keeps it: the slower rate releases when it is 0.
+// Whether the slower rate releases in this activation of the faster task: the task's shared countdown (the name of
+// its flag), or, inside an enabled subsystem where activations can be skipped, the block's own. The interpreter keeps
+// one countdown per block; both count the activations in which the transition runs, so they release alike.
+std::string Generator::release_flag(const ProgramBlock& block, std::string& statements) const {
+  const Transfer transfer = transfer_of(program_, block);
+  const std::size_t fast = transfer.kind == Transfer::Kind::fast_to_slow ? block.update_task : block.task;
+  if (block.enables.empty()) return shared_countdown(fast, transfer.ratio);
+  const std::string member = "state." + block.identifier;
+  statements += "  const bool " + block.identifier + "_release = " + member + "_countdown == 0;\n";
+  statements += "  " + member + "_countdown = " + block.identifier + "_release ? " +
+                std::to_string(transfer.ratio - 1) + "U : " + member + "_countdown - 1U;\n";
+  return block.identifier + "_release";
+}
+
+std::string Generator::shared_countdown(std::size_t task, std::uint32_t ratio) {
+  return "release_" + std::to_string(task) + "_every_" + std::to_string(ratio);
+}
+
+std::vector<std::pair<std::size_t, std::uint32_t>> Generator::shared_countdowns() const {
+  std::vector<std::pair<std::size_t, std::uint32_t>> countdowns;
+  for (const ProgramBlock& block : program_.blocks) {
+    if (block.type() != "RateTransition" || !block.enables.empty()) continue;
+    const Transfer transfer = transfer_of(program_, block);
+    if (transfer.kind == Transfer::Kind::latest) continue;
+    const std::size_t fast = transfer.kind == Transfer::Kind::fast_to_slow ? block.update_task : block.task;
+    if (std::find(countdowns.begin(), countdowns.end(), std::pair{fast, transfer.ratio}) == countdowns.end()) {
+      countdowns.emplace_back(fast, transfer.ratio);
+    }
+  }
+  return countdowns;
+}
+
+std::string Generator::task_prologue(std::size_t task) const {
+  std::string text;
+  for (const auto& [fast, ratio] : shared_countdowns()) {
+    if (fast != task) continue;
+    const std::string name = shared_countdown(fast, ratio);
+    text += "  const bool " + name + " = state." + name + " == 0;  // the rate " + std::to_string(ratio) +
+            " times slower releases now\n";
+  }
+  return text;
+}
+
+std::string Generator::task_epilogue(std::size_t task) const {
+  std::string text;
+  for (const auto& [fast, ratio] : shared_countdowns()) {
+    if (fast != task) continue;
+    const std::string name = shared_countdown(fast, ratio);
+    text += "  state." + name + " = " + name + " ? " + std::to_string(ratio - 1) + "U : state." + name + " - 1U;\n";
+  }
+  return text;
+}
+
 std::string Generator::rate_transition_output(const ProgramBlock& block) const {
   const Transfer transfer = transfer_of(program_, block);
   const std::size_t y = block.outputs[0];
   const std::size_t n = program_.signals[y].type.elements();
   const std::string member = "state." + block.identifier;
-  std::string read;
   std::string text;
-  if (transfer.kind == Transfer::Kind::slow_to_fast) {
-    text += "  const bool " + block.identifier + "_release = " + member + "_countdown == 0;\n";
-    text += "  " + member + "_countdown = " + block.identifier + "_release ? " + std::to_string(transfer.ratio - 1) +
-            "U : " + member + "_countdown - 1U;\n";
-    read = member + ".read(" + block.identifier + "_release)";
-  } else {
-    read = member + ".read()";
-  }
+  const std::string read = transfer.kind == Transfer::Kind::slow_to_fast
+                               ? member + ".read(" + release_flag(block, text) + ")"
+                               : member + ".read()";
   if (n == 1) return text + "  " + element(y, "0") + " = " + read + ";\n";
   return text + "  {\n    const auto& value = " + read + ";\n  " + for_each(n, element(y, "i") + " = value[i];") +
          "  }\n";
@@ -547,9 +617,9 @@ std::string Generator::rate_transition_update(const ProgramBlock& block) const {
     value += "}";
   }
   if (transfer.kind == Transfer::Kind::fast_to_slow) {
-    return "  {\n    const bool release = " + member + "_countdown == 0;\n    " + member + "_countdown = release ? " +
-           std::to_string(transfer.ratio - 1) + "U : " + member + "_countdown - 1U;\n    " + member + ".write(" +
-           value + ", release);\n  }\n";
+    std::string text;
+    const std::string release = release_flag(block, text);
+    return text + "  " + member + ".write(" + value + ", " + release + ");\n";
   }
   return "  " + member + ".write(" + value + ");\n";
 }

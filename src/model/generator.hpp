@@ -3,7 +3,10 @@
 // generated structures, and the C++ text of values and of each block's two phases.
 
 #include <cstddef>
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "duet/model/program.hpp"
@@ -42,6 +45,9 @@ class Generator {
   // The statements of a block's phase (indented), with locals declared where their driver computes them.
   [[nodiscard]] std::string output_phase(std::size_t block) const;
   [[nodiscard]] std::string update_phase(std::size_t block) const;
+  // What a task's step function does first and last: the release flags of its deterministic rate transitions.
+  [[nodiscard]] std::string task_prologue(std::size_t task) const;
+  [[nodiscard]] std::string task_epilogue(std::size_t task) const;
 
  private:
   [[nodiscard]] std::string storage(std::size_t signal) const;  // the variable, without a subscript
@@ -60,11 +66,15 @@ class Generator {
   [[nodiscard]] std::string output_statements(const ProgramBlock& block) const;
   [[nodiscard]] std::string update_statements(const ProgramBlock& block) const;
   [[nodiscard]] std::string hardware_output(const ProgramBlock& block) const;
+  [[nodiscard]] std::string release_flag(const ProgramBlock& block, std::string& statements) const;
+  [[nodiscard]] static std::string shared_countdown(std::size_t task, std::uint32_t ratio);
+  [[nodiscard]] std::vector<std::pair<std::size_t, std::uint32_t>> shared_countdowns() const;  // (task, ratio)
   [[nodiscard]] std::string rate_transition_output(const ProgramBlock& block) const;
   [[nodiscard]] std::string rate_transition_update(const ProgramBlock& block) const;
 
   const Program& program_;
   std::vector<bool> member_;
+  std::vector<std::optional<std::string>> inlined_;  // a literal Constant's value, written where it is read
 };
 
 }  // namespace duet::model

@@ -33,21 +33,17 @@ static_assert(offsetof(Signals, reference) == 0, "the A2L's layout");
 static_assert(offsetof(Signals, setpoint) == 4, "the A2L's layout");
 static_assert(offsetof(Signals, error) == 8, "the A2L's layout");
 static_assert(offsetof(Signals, stop) == 12, "the A2L's layout");
-static_assert(offsetof(Signals, nothing) == 16, "the A2L's layout");
-static_assert(offsetof(Signals, duty) == 20, "the A2L's layout");
-static_assert(offsetof(Signals, unity) == 24, "the A2L's layout");
-static_assert(offsetof(Signals, compare) == 28, "the A2L's layout");
-static_assert(offsetof(Signals, theta) == 32, "the A2L's layout");
-static_assert(offsetof(Signals, rate) == 36, "the A2L's layout");
-static_assert(offsetof(Signals, offset) == 40, "the A2L's layout");
-static_assert(offsetof(Signals, monitor_e_magnitude) == 44, "the A2L's layout");
-static_assert(offsetof(Signals, iae) == 48, "the A2L's layout");
-static_assert(offsetof(Signals, filling) == 52, "the A2L's layout");
-static_assert(offsetof(Signals, draining) == 56, "the A2L's layout");
-static_assert(offsetof(Signals, stall) == 60, "the A2L's layout");
-static_assert(offsetof(Signals, stop_now) == 64, "the A2L's layout");
-static_assert(offsetof(Signals, offset_next) == 68, "the A2L's layout");
-static_assert(sizeof(Signals) == 72);
+static_assert(offsetof(Signals, duty) == 16, "the A2L's layout");
+static_assert(offsetof(Signals, compare) == 20, "the A2L's layout");
+static_assert(offsetof(Signals, theta) == 24, "the A2L's layout");
+static_assert(offsetof(Signals, rate) == 28, "the A2L's layout");
+static_assert(offsetof(Signals, offset) == 32, "the A2L's layout");
+static_assert(offsetof(Signals, monitor_e_magnitude) == 36, "the A2L's layout");
+static_assert(offsetof(Signals, iae) == 40, "the A2L's layout");
+static_assert(offsetof(Signals, stall) == 44, "the A2L's layout");
+static_assert(offsetof(Signals, stop_now) == 48, "the A2L's layout");
+static_assert(offsetof(Signals, offset_next) == 52, "the A2L's layout");
+static_assert(sizeof(Signals) == 56);
 
 Parameters parameters{
     .Kp = 0.0196F,
@@ -93,36 +89,25 @@ constexpr float body_initial[] = {0.0F, 0.0F};
 
 void initialize() {
   parameter_page = reinterpret_cast<const std::uint8_t*>(&parameters);
+  state.release_0_every_10 = 0;
   state.clock.count = std::uint32_t{0};
   state.pid = {0.0F, 0.0F};
   for (std::size_t i = 0; i < 2; ++i) state.body[i].state = body_initial[i];
   state.error_to_supervision.reset(0.0F);
-  state.error_to_supervision_countdown = 0;
   state.duty_to_supervision.reset(0.0F);
-  state.duty_to_supervision_countdown = 0;
   state.stop_to_supervision.reset(false);
-  state.stop_to_supervision_countdown = 0;
   state.trim_to_loop.reset(0.0F);
-  state.trim_to_loop_countdown = 0;
   state.stop_to_loop.reset(false);
-  state.stop_to_loop_countdown = 0;
   state.monitor_integrate.state = 0.0F;
   state.stall_time.state = 0.0F;
   state.trim_held.state = 0.0F;
-  // zero (Constant)
-  signals.nothing = 0.0F;
-  // one (Constant)
-  signals.unity = 1.0F;
-  // fill (Constant)
-  signals.filling = 1.0F;
-  // drain (Constant)
-  signals.draining = -1.0F;
 }
 
 void terminate() {}
 
 void step_rate_1() {
   const Parameters& p = parameters_in_use();
+  const bool release_0_every_10 = state.release_0_every_10 == 0;  // the rate 10 times slower releases now
   // clock (Counter)
   std::uint32_t count{};
   count = state.clock.output();
@@ -150,9 +135,7 @@ void step_rate_1() {
   bool too_far{};
   too_far = duet::blocks::compare(duet::blocks::CompareOperator::greater, angle_magnitude, p.angle_limit);
   // trim_to_loop (RateTransition)
-  const bool trim_to_loop_release = state.trim_to_loop_countdown == 0;
-  state.trim_to_loop_countdown = trim_to_loop_release ? 9U : state.trim_to_loop_countdown - 1U;
-  signals.offset = state.trim_to_loop.read(trim_to_loop_release);
+  signals.offset = state.trim_to_loop.read(release_0_every_10);
   // add_trim (Sum)
   signals.setpoint = duet::blocks::add(signals.reference, signals.offset);
   // compare_angle (Sum)
@@ -162,19 +145,17 @@ void step_rate_1() {
   pid_output = state.pid.output(signals.error, {p.Kp, p.Ki, p.Kd, p.N, -1.0F, 1.0F});
   // stop_to_loop (RateTransition)
   bool stop_request{};
-  const bool stop_to_loop_release = state.stop_to_loop_countdown == 0;
-  state.stop_to_loop_countdown = stop_to_loop_release ? 9U : state.stop_to_loop_countdown - 1U;
-  stop_request = state.stop_to_loop.read(stop_to_loop_release);
+  stop_request = state.stop_to_loop.read(release_0_every_10);
   // stop_any (Logic)
   signals.stop = duet::blocks::logic<duet::blocks::LogicOperator::logical_or>(duet::blocks::convert<bool>(too_far), duet::blocks::convert<bool>(stop_request));
   // motors_off (Switch)
   float command{};
-  command = duet::blocks::select(duet::blocks::convert<bool>(signals.stop), signals.nothing, pid_output);
+  command = duet::blocks::select(duet::blocks::convert<bool>(signals.stop), 0.0F, pid_output);
   // limit (Saturation)
   signals.duty = duet::blocks::saturate(command, -1.0F, 1.0F);
   // shift (Sum)
   float duty_shifted{};
-  duty_shifted = duet::blocks::add(signals.duty, signals.unity);
+  duty_shifted = duet::blocks::add(signals.duty, 1.0F);
   // scale (Gain)
   float counts{};
   counts = duet::blocks::gain(duty_shifted, 2100.0F);
@@ -195,21 +176,10 @@ void step_rate_1() {
   state.clock.update(std::uint32_t{4999});
   state.pid.update(signals.error, {p.Kp, p.Ki, p.Kd, p.N, -1.0F, 1.0F}, 0.001F);
   for (std::size_t i = 0; i < 2; ++i) state.body[i].update(x_next[i]);
-  {
-    const bool release = state.error_to_supervision_countdown == 0;
-    state.error_to_supervision_countdown = release ? 9U : state.error_to_supervision_countdown - 1U;
-    state.error_to_supervision.write(signals.error, release);
-  }
-  {
-    const bool release = state.duty_to_supervision_countdown == 0;
-    state.duty_to_supervision_countdown = release ? 9U : state.duty_to_supervision_countdown - 1U;
-    state.duty_to_supervision.write(signals.duty, release);
-  }
-  {
-    const bool release = state.stop_to_supervision_countdown == 0;
-    state.stop_to_supervision_countdown = release ? 9U : state.stop_to_supervision_countdown - 1U;
-    state.stop_to_supervision.write(signals.stop, release);
-  }
+  state.error_to_supervision.write(signals.error, release_0_every_10);
+  state.duty_to_supervision.write(signals.duty, release_0_every_10);
+  state.stop_to_supervision.write(signals.stop, release_0_every_10);
+  state.release_0_every_10 = release_0_every_10 ? 9U : state.release_0_every_10 - 1U;
 }
 
 void step_rate_10() {
@@ -242,7 +212,7 @@ void step_rate_10() {
   at_limit = duet::blocks::compare(duet::blocks::CompareOperator::greater_equal, duty_size, 0.98F);
   // fill_or_drain (Switch)
   float stall_change{};
-  stall_change = duet::blocks::select(duet::blocks::convert<bool>(at_limit), signals.filling, signals.draining);
+  stall_change = duet::blocks::select(duet::blocks::convert<bool>(at_limit), 1.0F, -1.0F);
   // stall_time (DiscreteIntegrator)
   signals.stall = state.stall_time.output();
   // stalled (Compare)
@@ -264,7 +234,7 @@ void step_rate_10() {
   state.trim_to_loop.write(signals.offset_next);
   state.stop_to_loop.write(signals.stop_now);
   if (duet::blocks::convert<bool>(loop_running)) {
-    state.monitor_integrate.update(signals.monitor_e_magnitude, 1.0F, 0.01F, -std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity());
+    state.monitor_integrate.update(signals.monitor_e_magnitude, 1.0F, 0.01F);
   }
   state.stall_time.update(stall_change, 1.0F, 0.01F, 0.0F, 1.0F);
   state.trim_held.update(signals.offset_next);

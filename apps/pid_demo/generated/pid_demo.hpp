@@ -45,17 +45,13 @@ struct Signals {
   float setpoint;
   float error;
   bool stop;
-  float nothing;
   float duty;
-  float unity;
   std::uint16_t compare;
   float theta;
   float rate;
   float offset;
   float monitor_e_magnitude;
   float iae;
-  float filling;
-  float draining;
   float stall;
   bool stop_now;
   float offset_next;
@@ -63,19 +59,15 @@ struct Signals {
 
 // The blocks' state.
 struct State {
+  std::uint32_t release_0_every_10;
   duet::blocks::Counter<std::uint32_t> clock;
   duet::blocks::DiscretePid<float> pid;
   duet::blocks::UnitDelay<float> body[2];
   duet::rt::FastToSlow<float> error_to_supervision;
-  std::uint32_t error_to_supervision_countdown;
   duet::rt::FastToSlow<float> duty_to_supervision;
-  std::uint32_t duty_to_supervision_countdown;
   duet::rt::FastToSlow<bool> stop_to_supervision;
-  std::uint32_t stop_to_supervision_countdown;
   duet::rt::SlowToFast<float> trim_to_loop;
-  std::uint32_t trim_to_loop_countdown;
   duet::rt::SlowToFast<bool> stop_to_loop;
-  std::uint32_t stop_to_loop_countdown;
   duet::blocks::DiscreteIntegrator<float> monitor_integrate;
   duet::blocks::DiscreteIntegrator<float> stall_time;
   duet::blocks::UnitDelay<float> trim_held;

@@ -42,17 +42,20 @@ constexpr F power_of_two(int exponent) {
 template <Integer To, Floating From>
 constexpr To floating_to_integer(From u) {
   using Limits = std::numeric_limits<To>;
-  if (is_nan(u)) return To{0};
+  if constexpr (!std::is_signed_v<To>) {
+    // NaN, negative values and (-1, 0) all give 0: one comparison, false for a NaN, tells them apart.
+    if (!(u > From{-1})) return To{0};
+  } else {
+    if (is_nan(u)) return To{0};
+  }
   // One past the largest value is a power of two (2^digits), so it is exact in From, unlike the largest value itself:
   // int32's 2^31 - 1 rounds up to 2^31 in float.
   constexpr From past_max = power_of_two<From>(Limits::digits);
   if (u >= past_max) return Limits::max();
   if constexpr (std::is_signed_v<To>) {
     if (u <= -past_max) return Limits::min();  // -2^digits is the minimum itself
-  } else {
-    if (u <= From{-1}) return To{0};  // (-1, 0) truncates to 0 by itself
   }
-  return static_cast<To>(u);  // in range: the cast truncates toward zero
+  return static_cast<To>(u);  // (-1, 0) truncates to 0 by itself  // in range: the cast truncates toward zero
 }
 
 template <Integer To, Integer From>

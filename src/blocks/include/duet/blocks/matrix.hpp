@@ -11,16 +11,17 @@ namespace duet::blocks {
 
 // y = a * b for row-major a (rows x inner), b (inner x columns) and y (rows x columns):
 //   y[r * columns + c] = sum over k = 0, 1, ..., inner - 1 of a[r * inner + k] * b[k * columns + c]
-// accumulated from T{0} in increasing k as acc = add(acc, multiply(a[...], b[...])); this order is the result's
-// rounding, so it is part of the contract. inner == 0 gives a zero matrix.
+// accumulated in increasing k from the first product as acc = add(acc, multiply(a[...], b[...])); this order is the
+// result's rounding, so it is part of the contract (starting from the first product rather than from 0 saves an
+// addition and differs only in the sign of a zero sum). inner == 0 gives a zero matrix.
 // Preconditions: the arrays hold at least those many elements, and y overlaps neither a nor b (y is written while a
 // and b are still being read).
 template <Number T>
 constexpr void matrix_multiply(const T* a, const T* b, T* y, std::size_t rows, std::size_t inner, std::size_t columns) {
   for (std::size_t r = 0; r < rows; ++r) {
     for (std::size_t c = 0; c < columns; ++c) {
-      T acc{0};
-      for (std::size_t k = 0; k < inner; ++k) acc = add(acc, multiply(a[r * inner + k], b[k * columns + c]));
+      T acc = inner == 0 ? T{0} : multiply(a[r * inner], b[c]);
+      for (std::size_t k = 1; k < inner; ++k) acc = add(acc, multiply(a[r * inner + k], b[k * columns + c]));
       y[r * columns + c] = acc;
     }
   }

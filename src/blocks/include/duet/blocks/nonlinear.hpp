@@ -23,7 +23,13 @@ constexpr T saturate(T u, T lower, T upper) {
 template <Number T>
 constexpr T absolute(T u) {
   if constexpr (Floating<T>) {
-    return detail::clear_sign_bit(u);
+    // The compiler's own |u|, which clears the sign bit and nothing else (NaNs too), as detail::clear_sign_bit does,
+    // in one instruction (VABS) where the bit operations take three. GCC and Clang evaluate it in constant expressions.
+    if constexpr (std::is_same_v<T, float>) {
+      return __builtin_fabsf(u);
+    } else {
+      return __builtin_fabs(u);
+    }
   } else if constexpr (std::is_signed_v<T>) {
     if (u == std::numeric_limits<T>::min()) return std::numeric_limits<T>::max();
     return u < T{0} ? static_cast<T>(-u) : u;  // -u is computed in int for small types; it fits T now

@@ -36,6 +36,8 @@ struct DiscreteIntegrator {
   constexpr void update(T u, T gain, T period_s, T lower, T upper) {
     state = saturate(add(state, multiply(multiply(gain, period_s), u)), lower, upper);
   }
+  // Without limits: the same as limits of -infinity and +infinity, which saturate lets every value through.
+  constexpr void update(T u, T gain, T period_s) { state = add(state, multiply(multiply(gain, period_s), u)); }
 };
 
 // Backward difference (Simulink's Discrete Derivative):
