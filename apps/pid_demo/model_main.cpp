@@ -37,6 +37,7 @@ struct Calibration {
   float a[2][2];
   float b[2][2];
   float disturbance;
+  float dead_band;
 };
 Calibration calibration{
     .kp = 0.0196F,
@@ -50,7 +51,8 @@ Calibration calibration{
     .halt = false,
     .a = {{1.0F, 0.0009994951699737688F}, {0.0F, 0.9989905098783265F}},
     .b = {{0.00037087512818177184F, 4.998317091398542e-07F}, {0.7416254161205363F, 0.0009994951699737688F}},
-    .disturbance = -2.0F};
+    .disturbance = -2.0F,
+    .dead_band = 0.01F};
 
 // The measurable signals.
 float reference;
@@ -59,6 +61,12 @@ float error;
 bool stop;
 float duty;
 std::uint16_t compare;
+bool in1;
+bool in2;
+bool stby;
+float pwm;
+std::uint32_t reversals;
+std::uint16_t stops;
 float theta;
 float rate;
 float offset;
@@ -75,6 +83,9 @@ std::uint32_t count;
 float integrator;
 float filter;
 float x[2];
+std::int8_t heading;  // the motor logic's last direction
+bool stop_before;     // the stop in the step before, for its rising edge
+std::uint16_t stop_count;
 // Between the loop and the supervision: the loop takes and hands over values at the supervision's release ticks.
 std::uint32_t ticks_to_release;
 float error_latched;
@@ -103,6 +114,11 @@ void reset() {
   filter = 0.0F;
   x[0] = 0.0F;
   x[1] = 0.0F;
+  heading = 0;
+  reversals = 0;
+  stop_before = false;
+  stop_count = 1;
+  stops = 0;
   ticks_to_release = 0;
   error_latched = 0.0F;
   duty_latched = 0.0F;
@@ -148,6 +164,37 @@ void step_1ms() {
   compare = static_cast<std::uint16_t>((duty + 1.0F) * 2100.0F);
   volatile std::uint32_t& leds = duet::cortex_m::register32(duet::mps2_an386::leds_register);
   leds = stop ? (leds | 1U) : (leds & ~1U);
+  // The motor logic: the H-bridge's pins (TB6612FNG) and its PWM in percent, the reversals counted; the pins on LEDs.
+  std::int8_t direction = 0;
+  if (duty > c.dead_band) {
+    direction = 1;
+  } else if (duty < -c.dead_band) {
+    direction = -1;
+  }
+  if (stop) direction = 0;
+  stby = !stop;
+  in1 = !stop && direction >= 0;
+  in2 = !stop && direction <= 0;
+  if (direction > 0) {
+    pwm = duty * 100.0F;
+  } else if (direction < 0) {
+    pwm = duty * -100.0F;
+  } else {
+    pwm = 0.0F;
+  }
+  if (direction != 0) {
+    if (heading != 0 && heading != direction) ++reversals;
+    heading = direction;
+  }
+  leds = in1 ? (leds | 2U) : (leds & ~2U);
+  leds = in2 ? (leds | 4U) : (leds & ~4U);
+  leds = stby ? (leds | 8U) : (leds & ~8U);
+  // The safety stops, counted at the stop's rising edges.
+  if (stop && !stop_before) {
+    stops = stop_count;
+    ++stop_count;  // after 65535, 0: the Counter's limit
+  }
+  stop_before = stop;
   // The plant's step.
   const float x_next0 = a_x0 + (c.b[0][0] * duty + c.b[0][1] * c.disturbance);
   const float x_next1 = a_x1 + (c.b[1][0] * duty + c.b[1][1] * c.disturbance);
@@ -214,6 +261,12 @@ constexpr std::uint32_t host_rate = 0x3c9dccf0;   // 0.019262761
 constexpr std::uint32_t host_duty = 0x3b3a8b1f;   // 0.0028464270
 constexpr std::uint32_t host_iae = 0x3d3e5670;    // 0.046469152
 constexpr std::uint16_t host_compare = 2105;
+constexpr std::uint32_t host_pwm = 0x00000000;  // 0: the duty is inside the dead band, the motor brakes
+constexpr bool host_in1 = true;
+constexpr bool host_in2 = true;
+constexpr bool host_stby = true;
+constexpr std::uint32_t host_reversals = 0;
+constexpr std::uint16_t host_stops = 0;
 
 bool finite(float value) { return value - value == 0.0F; }
 
@@ -271,7 +324,10 @@ int main() {
   const duet::rt::TaskStatistics& loop = executive.statistics(0);
   const duet::rt::TaskStatistics& supervision = executive.statistics(1);
   const pid_demo::Signals& s = pid_demo::signals;
-  const bool led = (duet::cortex_m::register32(board::leds_register) & 1U) != 0;
+  const auto led_on = [](unsigned number) {
+    return (duet::cortex_m::register32(board::leds_register) & (1U << number)) != 0;
+  };
+  const bool led = led_on(0U);
   duet::TextBuffer<200> line;
   line.append("generated pid_demo: ").append(loop.activations).append(" loop steps, ").append(loop.overruns);
   line.append(" overruns; ").append(supervision.activations).append(" supervision steps, ");
@@ -288,12 +344,19 @@ int main() {
   line.append(", compare ").append(s.compare).append(", stop ").append(s.stop).append(", LED0 ");
   line.append(led ? "on" : "off").append('\n');
   duet::cortex_m::console_write(line.view());
-  const bool as_on_the_pc = std::bit_cast<std::uint32_t>(s.theta) == host_theta &&
-                            std::bit_cast<std::uint32_t>(s.rate) == host_rate &&
-                            std::bit_cast<std::uint32_t>(s.duty) == host_duty &&
-                            std::bit_cast<std::uint32_t>(s.iae) == host_iae && s.compare == host_compare;
+  line.clear();
+  write_float(line, "pwm", s.pwm);
+  line.append(", IN1 ").append(s.in1).append(", IN2 ").append(s.in2).append(", STBY ").append(s.stby);
+  line.append(", reversals ").append(s.reversals).append(", stops ").append(s.stops).append('\n');
+  duet::cortex_m::console_write(line.view());
+  const bool as_on_the_pc =
+      std::bit_cast<std::uint32_t>(s.theta) == host_theta && std::bit_cast<std::uint32_t>(s.rate) == host_rate &&
+      std::bit_cast<std::uint32_t>(s.duty) == host_duty && std::bit_cast<std::uint32_t>(s.iae) == host_iae &&
+      s.compare == host_compare && std::bit_cast<std::uint32_t>(s.pwm) == host_pwm && s.in1 == host_in1 &&
+      s.in2 == host_in2 && s.stby == host_stby && s.reversals == host_reversals && s.stops == host_stops;
   const bool sane = finite(s.theta) && finite(s.rate) && finite(s.iae) && s.duty >= -1.0F && s.duty <= 1.0F &&
-                    s.compare <= 4200U && !s.stop && led == s.stop;
+                    s.compare <= 4200U && !s.stop && led == s.stop && led_on(1U) == s.in1 && led_on(2U) == s.in2 &&
+                    led_on(3U) == s.stby;
   const bool model_ok = ran && loop.activations == ticks && supervision.activations == ticks / 10U &&
                         loop.overruns == 0 && supervision.overruns == 0 && as_on_the_pc && sane;
   line.clear();
@@ -302,19 +365,40 @@ int main() {
   line.append(model_ok ? "; model check passed\n" : "; model check FAILED\n");
   duet::cortex_m::console_write(line.view());
 
-  // The hand-written steps compute what the generated ones do: 1000 ticks each from the start, then every
-  // measurable signal compared.
+  // The hand-written steps compute what the generated ones do: every measurable signal compared after each tick,
+  // for 1000 ticks from the start, then 1000 more with the operator's stop for 200 ticks (the motor logic's standby
+  // and the counted stops) and a smaller dead band (more reversals).
+  const auto same_signals = [&s] {
+    return s.reference == hand_written::reference && s.setpoint == hand_written::setpoint &&
+           s.error == hand_written::error && s.stop == hand_written::stop && s.duty == hand_written::duty &&
+           s.compare == hand_written::compare && s.in1 == hand_written::in1 && s.in2 == hand_written::in2 &&
+           s.stby == hand_written::stby && s.pwm == hand_written::pwm && s.reversals == hand_written::reversals &&
+           s.stops == hand_written::stops && s.theta == hand_written::theta && s.rate == hand_written::rate &&
+           s.offset == hand_written::offset && s.iae == hand_written::iae && s.stall == hand_written::stall;
+  };
   pid_demo::initialize();
   hand_written::reset();
-  for (std::uint32_t tick = 0; tick < ticks; ++tick) {
+  bool same = true;
+  for (std::uint32_t tick = 0; tick < 2U * ticks; ++tick) {
+    if (tick == 1200U || tick == 1400U) {
+      pid_demo::parameters.halt = tick == 1200U;
+      hand_written::calibration.halt = tick == 1200U;
+    }
+    if (tick == 1500U || tick == 2U * ticks - 1U) {
+      pid_demo::parameters.dead_band = tick == 1500U ? 0.002F : 0.01F;
+      hand_written::calibration.dead_band = tick == 1500U ? 0.002F : 0.01F;
+    }
     generated_tick(tick);
     hand_written_tick(tick);
+    same = same && same_signals();
   }
-  const bool same = s.reference == hand_written::reference && s.setpoint == hand_written::setpoint &&
-                    s.error == hand_written::error && s.stop == hand_written::stop && s.duty == hand_written::duty &&
-                    s.compare == hand_written::compare && s.theta == hand_written::theta &&
-                    s.rate == hand_written::rate && s.offset == hand_written::offset && s.iae == hand_written::iae &&
-                    s.stall == hand_written::stall;
+  line.clear();
+  line.append("after the stop: ").append(s.stops).append(" stops, ").append(s.reversals).append(" reversals, ");
+  line.append("LED1..3 (IN1, IN2, STBY) ").append(led_on(1U) ? "on" : "off").append(' ');
+  line.append(led_on(2U) ? "on" : "off").append(' ').append(led_on(3U) ? "on" : "off").append('\n');
+  duet::cortex_m::console_write(line.view());
+  same =
+      same && s.stops == 1U && s.reversals > 0U && led_on(1U) == s.in1 && led_on(2U) == s.in2 && led_on(3U) == s.stby;
   line.clear();
   line.append(same ? "hand-written steps compute the same signals\n" : "hand-written steps DIFFER from generated\n");
   duet::cortex_m::console_write(line.view());

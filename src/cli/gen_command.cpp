@@ -8,9 +8,8 @@
 #include <ostream>
 #include <string>
 
+#include "checked_model.hpp"
 #include "duet/model/generate.hpp"
-#include "duet/model/model_file.hpp"
-#include "duet/model/program.hpp"
 #include "duet/support/text_file.hpp"
 
 namespace duet::cli {
@@ -22,16 +21,8 @@ struct GenOptions {
 };
 
 ExitCode run_gen(const GenOptions& options, Streams streams) {
-  auto model = model::load_model(options.file);
-  if (!model) {
-    streams.err << model.error() << '\n';
-    return ExitCode::failure;
-  }
-  const model::ProgramBuild build = model::build_program(model.value());
-  for (const model::Diagnostic& diagnostic : build.diagnostics) {
-    streams.err << model::format(options.file, diagnostic) << '\n';
-  }
-  if (!build.program) return ExitCode::failure;
+  const auto checked = load_checked_model(options.file, streams.err);
+  if (!checked) return ExitCode::failure;
   std::error_code error;
   std::filesystem::create_directories(options.output, error);
   if (error) {
@@ -43,7 +34,7 @@ ExitCode run_gen(const GenOptions& options, Streams streams) {
       std::filesystem::weakly_canonical(std::filesystem::absolute(options.file)).parent_path();
   const std::string relative =
       model_folder.lexically_relative(std::filesystem::weakly_canonical(options.output)).generic_string();
-  auto files = model::generate(*build.program, std::filesystem::path{options.file}.filename().string(),
+  auto files = model::generate(checked->program, std::filesystem::path{options.file}.filename().string(),
                                relative.empty() ? "." : relative);
   if (!files) {
     streams.err << "duet gen: " << options.file << ": " << files.error() << '\n';
@@ -60,7 +51,7 @@ ExitCode run_gen(const GenOptions& options, Streams streams) {
       return ExitCode::failure;
     }
   }
-  streams.out << "generated " << model.value().name << " into " << options.output << ":";
+  streams.out << "generated " << checked->model->name << " into " << options.output << ":";
   for (const model::GeneratedFile& file : files.value()) streams.out << ' ' << file.name;
   streams.out << '\n';
   return ExitCode::success;

@@ -12,10 +12,10 @@
 #include <string>
 #include <vector>
 
+#include "checked_model.hpp"
 #include "duet/model/model_file.hpp"
 #include "duet/model/rates.hpp"
 #include "duet/model/render.hpp"
-#include "duet/model/validate.hpp"
 
 namespace duet::cli {
 namespace {
@@ -29,17 +29,11 @@ std::string join(const std::vector<std::string>& names) {
 // Diagnostics on standard error; with none that is an error, the task table with each task's blocks in execution
 // order on standard output.
 ExitCode check(const std::string& file, Streams streams) {
-  auto model = model::load_model(file);
-  if (!model) {
-    streams.err << model.error() << '\n';
-    return ExitCode::failure;
-  }
-  const std::vector<model::Diagnostic> diagnostics = model::validate(model.value());
-  for (const model::Diagnostic& diagnostic : diagnostics) streams.err << model::format(file, diagnostic) << '\n';
-  if (model::has_errors(diagnostics)) return ExitCode::failure;
-  const model::RateAnalysis rates = model::analyse_rates(model.value());
-  streams.out << model.value().name << ": " << rates.block_rates.size() << " blocks, " << rates.tasks.size()
-              << " tasks\n";
+  const auto checked = load_checked_model(file, streams.err);  // validation, rates, then types and sizes
+  if (!checked) return ExitCode::failure;
+  const model::Model& source = *checked->model;
+  const model::RateAnalysis rates = model::analyse_rates(source);
+  streams.out << source.name << ": " << rates.block_rates.size() << " blocks, " << rates.tasks.size() << " tasks\n";
   for (const model::Task& task : rates.tasks) {
     streams.out << "  " << task.name << ": ";
     if (task.rate.kind == model::Rate::Kind::periodic) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "duet/model/model_file.hpp"
+#include "checked_model.hpp"
 #include "duet/model/model_plant.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
@@ -37,16 +37,8 @@ bool write_file(const std::string& path, const std::string& text, Streams stream
 }
 
 ExitCode run_sim(const SimOptions& options, Streams streams) {
-  auto model = model::load_model(options.file);
-  if (!model) {
-    streams.err << model.error() << '\n';
-    return ExitCode::failure;
-  }
-  const model::ProgramBuild build = model::build_program(model.value());
-  for (const model::Diagnostic& diagnostic : build.diagnostics) {
-    streams.err << model::format(options.file, diagnostic) << '\n';
-  }
-  if (!build.program) return ExitCode::failure;
+  const auto checked = load_checked_model(options.file, streams.err);
+  if (!checked) return ExitCode::failure;
   // A plant by name, or a model file that is the plant.
   auto plant = [&]() -> Result<std::unique_ptr<plant::Plant>> {
     if (!options.plant.ends_with(".yaml")) return plant::make_plant(options.plant, options.seed);
@@ -59,13 +51,13 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
   }
-  auto simulated = model::simulate(*build.program, *plant.value(), {options.duration_s, options.signals, {}});
+  auto simulated = model::simulate(checked->program, *plant.value(), {options.duration_s, options.signals, {}});
   if (!simulated) {
     streams.err << "duet sim: " << simulated.error() << '\n';
     return ExitCode::failure;
   }
   const model::Recording& recording = simulated.value().recording;
-  const std::string name = model.value().name;
+  const std::string name = checked->model->name;
   const std::string csv = options.csv.empty() ? name + ".csv" : options.csv;
   if (!write_file(csv, model::to_csv(recording), streams)) return ExitCode::failure;
   streams.out << "simulated " << name << " for " << options.duration_s << " s (" << simulated.value().ticks

@@ -473,29 +473,30 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
 // its outputs copied out; the interpreter moves the same bytes.
 std::string Generator::code_call(const ProgramBlock& block) const {
   const std::string space = "code::" + block.identifier + "::";
-  std::string text = "  {\n    " + space + "Inputs in{};\n";
+  std::string text = "  {\n    " + space + "Inputs block_inputs{};\n";
   const auto copy = [](const std::string& to, const std::string& from, std::size_t count) {
     if (count == 1) return "    " + to + " = " + from + ";\n";
     return "    for (std::size_t i = 0; i < " + std::to_string(count) + "; ++i) " + to + "[i] = " + from + "[i];\n";
   };
   for (std::size_t k = 0; k < block.inputs.size(); ++k) {
     const std::size_t count = program_.signals[block.inputs[k]].type.elements();
-    text += copy("in." + block.input_ports[k], storage(block.inputs[k]), count);
+    text += copy("block_inputs." + block.input_ports[k], storage(block.inputs[k]), count);
   }
-  text += "    " + space + "Outputs out{};\n    " + space + "Parameters parameters{};\n";
+  text += "    " + space + "Outputs block_outputs{};\n    " + space + "Parameters block_parameters{};\n";
   for (const auto& [name, argument] : block.arguments) {
     const std::size_t count = std::max<std::size_t>(1, argument.value.elements.size());
     const DataType type = code_parameter_type(program_, block, name);
     for (std::size_t i = 0; i < count; ++i) {
       const std::string index = std::to_string(i);
-      text += "    parameters." + name + (count > 1 ? "[" + index + "]" : "") + " = " +
+      text += "    block_parameters." + name + (count > 1 ? "[" + index + "]" : "") + " = " +
               argument_value(block, name, type, i) + ";\n";
     }
   }
-  text += "    " + block.block->code->function + "(in, out, state." + block.identifier + ", parameters);\n";
+  text += "    " + block.block->code->function + "(block_inputs, block_outputs, state." + block.identifier +
+          ", block_parameters);\n";
   for (std::size_t k = 0; k < block.outputs.size(); ++k) {
     const std::size_t count = program_.signals[block.outputs[k]].type.elements();
-    text += copy(storage(block.outputs[k]), "out." + block.output_ports[k], count);
+    text += copy(storage(block.outputs[k]), "block_outputs." + block.output_ports[k], count);
   }
   return text + "  }\n";
 }

@@ -406,6 +406,7 @@ Model model(const YAML::Node& root, const std::string& file) {
       if (entry.second["type"]) signal.type = data_type(entry.second["type"]);
       if (entry.second["size"]) signal.shape = shape(entry.second["size"]);
       if (entry.second["unit"]) signal.unit = entry.second["unit"].Scalar();
+      if (entry.second["description"]) signal.description = entry.second["description"].Scalar();
       if (const YAML::Node measurable = entry.second["measurable"]) {
         if (!YAML::convert<bool>::decode(measurable, signal.measurable))
           fail(measurable, "measurable is true or false");

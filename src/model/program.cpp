@@ -97,6 +97,7 @@ class ProgramBuilder {
         for (const SignalDeclaration& declaration : model_.signals) {
           if (declaration.name != signal.name) continue;
           signal.unit = declaration.unit;
+          signal.description = declaration.description;
           signal.measurable = declaration.measurable;
         }
         signal_of[output] = program_.signals.size();

@@ -145,7 +145,17 @@ RateAnalysis analyse_rates(const Model& model) {
   RateAnalysis result;
   for (const Node& node : flat.nodes) {
     result.block_rates[node.path] = node.rate;
-    if (node.block->type == "RateTransition") continue;  // it is where rates may meet
+    if (node.block->type == "RateTransition") {  // it is where rates may meet; where none do, say so
+      const auto driver = node.inputs.empty() ? driver_of.end() : driver_of.find(node.inputs[0].signal);
+      if (driver != driver_of.end() && flat.nodes[driver->second].rate == node.rate &&
+          node.rate.kind == Rate::Kind::periodic) {
+        result.diagnostics.push_back({Diagnostic::Severity::warning, node.block->location,
+                                      "RateTransition '" + node.path + "' has the same rate on both sides (" +
+                                          describe(node.rate, model.base_period_us) + "): it only delays by one step",
+                                      "give the blocks it feeds a period of their own, e.g. period: {multiple: 10}"});
+      }
+      continue;
+    }
     std::vector<Input> sources = node.inputs;
     for (const std::string& enable : node.enables) sources.push_back({enable, node.block->location});
     for (const Input& input : sources) {

@@ -4,12 +4,14 @@
 
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <random>
 
 #include "duet/hardware/hardware.hpp"
 #include "duet/host/lock_step_port.hpp"
 #include "duet/model/generate.hpp"
 #include "duet/model/model_file.hpp"
+#include "duet/model/model_plant.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/rt/executive.hpp"
@@ -18,19 +20,33 @@
 #include "examples.hpp"
 #include "pid_demo.hpp"
 #include "step_time.hpp"
+#include "thermostat.hpp"
 #include "transfer_test.hpp"
 
 namespace duet::model {
 namespace {
 
-// Remembers every write, in order, and answers reads as the Loopback does.
-class LoggingPlant : public plant::Loopback {
+// The plant an example runs against: a Loopback, or a plant that is itself a model.
+using PlantFactory = std::function<std::unique_ptr<plant::Plant>()>;
+
+// Remembers every write and every read, in order, with the values, and hands them to the plant behind it.
+class LoggingPlant : public plant::Plant {
  public:
+  explicit LoggingPlant(const PlantFactory& factory)
+      : behind_{factory ? factory() : std::make_unique<plant::Loopback>()} {}
+  void advance(double time_s, const plant::RaiseInterrupt& raise) override { behind_->advance(time_s, raise); }
   void write(std::string_view resource, std::span<const double> values) override {
-    log.emplace_back(std::string{resource}, std::vector<double>(values.begin(), values.end()));
-    Loopback::write(resource, values);
+    log.emplace_back("write " + std::string{resource}, std::vector<double>(values.begin(), values.end()));
+    behind_->write(resource, values);
+  }
+  void read(std::string_view resource, std::span<double> values) override {
+    behind_->read(resource, values);
+    log.emplace_back("read " + std::string{resource}, std::vector<double>(values.begin(), values.end()));
   }
   std::vector<std::pair<std::string, std::vector<double>>> log;
+
+ private:
+  std::unique_ptr<plant::Plant> behind_;
 };
 
 struct Example {
@@ -40,7 +56,23 @@ struct Example {
   std::uint64_t ticks;
   std::function<void(std::uint64_t tick, Interpreter& model)> tune_interpreted;
   std::function<void(std::uint64_t tick)> tune_generated;
+  PlantFactory plant;  // none: a Loopback
+  // Measurements that must change over the run: what the example is there to cover.
+  std::vector<std::string> changing;
 };
+
+// A plant model from the examples' folders, a new instance of it each call.
+PlantFactory plant_model(const std::string& file) {
+  return [file]() -> std::unique_ptr<plant::Plant> {
+    auto plant = ModelPlant::load(std::string{DUET_SOURCE_DIR} + "/apps/" + file);
+    if (!plant.ok()) {
+      ADD_FAILURE() << plant.error();
+      return std::make_unique<plant::Loopback>();
+    }
+    EXPECT_TRUE(plant.value()->warnings().empty());
+    return std::move(plant).value();
+  };
+}
 
 double decode(xcp::host::DataType type, const std::byte* at) {
   const auto read = [at]<typename T>(T) {
@@ -109,7 +141,13 @@ constexpr std::size_t trim = 6;
 constexpr std::size_t stall_limit = 7;
 constexpr std::size_t halt = 8;
 constexpr std::size_t disturbance = 11;
+constexpr std::size_t dead_band = 12;
 }  // namespace pid_demo_parameter
+
+// thermostat's.
+namespace thermostat_parameter {
+constexpr std::size_t setpoint = 0;
+}  // namespace thermostat_parameter
 
 std::vector<Example> examples() {
   std::vector<std::uint16_t> table(4096);
@@ -137,11 +175,16 @@ std::vector<Example> examples() {
          if (tick == 3500)
            transfer_test::parameter_page = reinterpret_cast<const std::uint8_t*>(&transfer_test::parameters);
        }},
-      {"pid_demo", pid_demo::description, &pid_demo::signals, 6000,
-       // A calibration session: a gain and the trim tuned, the operator's stop for 400 ticks, the reference page for
-       // 500, then a shorter stall limit and a load the motor cannot hold: the stall stops it, then the angle limit.
+      {"pid_demo",
+       pid_demo::description,
+       &pid_demo::signals,
+       6000,
+       // A calibration session: a gain, the motor logic's dead band and the trim tuned, the operator's stop for 400
+       // ticks, the reference page for 500, then a shorter stall limit and a load the motor cannot hold: the stall
+       // stops it, then the angle limit.
        [](std::uint64_t tick, Interpreter& model) {
          if (tick == 1000) model.set_parameter(pid_demo_parameter::Kp, 0, 0.03);
+         if (tick == 1500) model.set_parameter(pid_demo_parameter::dead_band, 0, 0.002);
          if (tick == 2000) model.set_parameter(pid_demo_parameter::trim, 0, -0.3);
          if (tick == 2600) model.set_parameter(pid_demo_parameter::halt, 0, 1);
          if (tick == 3000) model.set_parameter(pid_demo_parameter::halt, 0, 0);
@@ -152,6 +195,7 @@ std::vector<Example> examples() {
        },
        [](std::uint64_t tick) {
          if (tick == 1000) pid_demo::parameters.Kp = 0.03F;
+         if (tick == 1500) pid_demo::parameters.dead_band = 0.002F;
          if (tick == 2000) pid_demo::parameters.trim = -0.3F;
          if (tick == 2600) pid_demo::parameters.halt = true;
          if (tick == 3000) pid_demo::parameters.halt = false;
@@ -160,7 +204,24 @@ std::vector<Example> examples() {
          if (tick == 4000) pid_demo::parameter_page = reinterpret_cast<const std::uint8_t*>(&pid_demo::parameters);
          if (tick == 4500) pid_demo::parameters.stall_limit = 0.2F;
          if (tick == 4500) pid_demo::parameters.disturbance = 800.0F;
-       }},
+       },
+       {},
+       // The motor logic (a Code block) and the safety stops counted by an edge-triggered subsystem.
+       {"in1", "in2", "stby", "pwm", "reversals", "stops"}},
+      // The thermostat against its heater, a plant model (1 ms) loaded from heater.yaml on each side, its ten ticks
+      // between the controller's (10 ms); at 1000 the set point goes up by 2 degrees.
+      {"thermostat",
+       thermostat::description,
+       &thermostat::signals,
+       2000,
+       [](std::uint64_t tick, Interpreter& model) {
+         if (tick == 1000) model.set_parameter(thermostat_parameter::setpoint, 0, 2200);
+       },
+       [](std::uint64_t tick) {
+         if (tick == 1000) thermostat::parameters.setpoint = 2200;
+       },
+       plant_model("thermostat/heater.yaml"),
+       {"heating", "sample"}},
   };
 }
 
@@ -172,7 +233,7 @@ TEST_P(BackToBack, GeneratedCodeComputesWhatTheInterpreterComputes) {
   ASSERT_TRUE(model.ok()) << model.error();
   const ProgramBuild build = build_program(model.value());
   ASSERT_TRUE(build.program.has_value());
-  LoggingPlant interpreted_plant;
+  LoggingPlant interpreted_plant{example.plant};
   SimulationOptions options;
   options.duration_s = static_cast<double>(example.ticks - 1) * model.value().base_period_us * 1e-6;
   options.before_tick = example.tune_interpreted;
@@ -180,7 +241,7 @@ TEST_P(BackToBack, GeneratedCodeComputesWhatTheInterpreterComputes) {
   ASSERT_TRUE(simulated.ok()) << simulated.error();
   const Recording& expected = simulated.value().recording;
 
-  LoggingPlant generated_plant;
+  LoggingPlant generated_plant{example.plant};
   const Recording generated = run_generated(example, generated_plant);
   ASSERT_EQ(generated.names, expected.names);
   ASSERT_EQ(generated.time_s.size(), expected.time_s.size());
@@ -198,9 +259,16 @@ TEST_P(BackToBack, GeneratedCodeComputesWhatTheInterpreterComputes) {
   for (const auto& column : expected.columns)
     changes = changes || std::adjacent_find(column.begin(), column.end(), std::not_equal_to<>{}) != column.end();
   EXPECT_TRUE(changes);
+  for (const std::string& name : example.changing) {
+    const auto found = std::find(expected.names.begin(), expected.names.end(), name);
+    ASSERT_NE(found, expected.names.end()) << name << " is not measured";
+    const auto& column = expected.columns[static_cast<std::size_t>(found - expected.names.begin())];
+    EXPECT_NE(std::adjacent_find(column.begin(), column.end(), std::not_equal_to<>{}), column.end())
+        << name << " stays " << column.front();
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, BackToBack, testing::Range<std::size_t>(0, 3),
+INSTANTIATE_TEST_SUITE_P(Examples, BackToBack, testing::Range<std::size_t>(0, examples().size()),
                          [](const testing::TestParamInfo<std::size_t>& parameter) {
                            return examples()[parameter.param].name;
                          });

@@ -4,3 +4,5 @@
 add_library(pid_demo_model STATIC ${CMAKE_CURRENT_LIST_DIR}/pid_demo.cpp)
 target_include_directories(pid_demo_model PUBLIC ${CMAKE_CURRENT_LIST_DIR})
 target_link_libraries(pid_demo_model PUBLIC duet_blocks duet_rt duet_xcp duet_hardware)
+# The Code blocks' headers, in the model's folder.
+target_include_directories(pid_demo_model PRIVATE ${CMAKE_CURRENT_LIST_DIR}/..)

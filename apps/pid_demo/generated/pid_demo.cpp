@@ -13,6 +13,7 @@
 #include "duet/blocks/table.hpp"
 #include "duet/blocks/trigonometry.hpp"
 #include "duet/hardware/hardware.hpp"
+#include "motor_logic.hpp"
 
 namespace pid_demo {
 
@@ -28,22 +29,29 @@ static_assert(offsetof(Parameters, halt) == 68, "the A2L's layout");
 static_assert(offsetof(Parameters, A) == 72, "the A2L's layout");
 static_assert(offsetof(Parameters, B) == 88, "the A2L's layout");
 static_assert(offsetof(Parameters, disturbance) == 104, "the A2L's layout");
-static_assert(sizeof(Parameters) == 108);
+static_assert(offsetof(Parameters, dead_band) == 108, "the A2L's layout");
+static_assert(sizeof(Parameters) == 112);
 static_assert(offsetof(Signals, reference) == 0, "the A2L's layout");
 static_assert(offsetof(Signals, setpoint) == 4, "the A2L's layout");
 static_assert(offsetof(Signals, error) == 8, "the A2L's layout");
 static_assert(offsetof(Signals, stop) == 12, "the A2L's layout");
 static_assert(offsetof(Signals, duty) == 16, "the A2L's layout");
 static_assert(offsetof(Signals, compare) == 20, "the A2L's layout");
-static_assert(offsetof(Signals, theta) == 24, "the A2L's layout");
-static_assert(offsetof(Signals, rate) == 28, "the A2L's layout");
-static_assert(offsetof(Signals, offset) == 32, "the A2L's layout");
-static_assert(offsetof(Signals, monitor_e_magnitude) == 36, "the A2L's layout");
-static_assert(offsetof(Signals, iae) == 40, "the A2L's layout");
-static_assert(offsetof(Signals, stall) == 44, "the A2L's layout");
-static_assert(offsetof(Signals, stop_now) == 48, "the A2L's layout");
-static_assert(offsetof(Signals, offset_next) == 52, "the A2L's layout");
-static_assert(sizeof(Signals) == 56);
+static_assert(offsetof(Signals, in1) == 22, "the A2L's layout");
+static_assert(offsetof(Signals, in2) == 23, "the A2L's layout");
+static_assert(offsetof(Signals, stby) == 24, "the A2L's layout");
+static_assert(offsetof(Signals, pwm) == 28, "the A2L's layout");
+static_assert(offsetof(Signals, reversals) == 32, "the A2L's layout");
+static_assert(offsetof(Signals, stops) == 36, "the A2L's layout");
+static_assert(offsetof(Signals, theta) == 40, "the A2L's layout");
+static_assert(offsetof(Signals, rate) == 44, "the A2L's layout");
+static_assert(offsetof(Signals, offset) == 48, "the A2L's layout");
+static_assert(offsetof(Signals, monitor_e_magnitude) == 52, "the A2L's layout");
+static_assert(offsetof(Signals, iae) == 56, "the A2L's layout");
+static_assert(offsetof(Signals, stall) == 60, "the A2L's layout");
+static_assert(offsetof(Signals, stop_now) == 64, "the A2L's layout");
+static_assert(offsetof(Signals, offset_next) == 68, "the A2L's layout");
+static_assert(sizeof(Signals) == 72);
 
 Parameters parameters{
     .Kp = 0.0196F,
@@ -58,6 +66,7 @@ Parameters parameters{
     .A = {1.0F, 0.0009994952F, 0.0F, 0.99899054F},
     .B = {0.00037087512F, 4.998317e-07F, 0.7416254F, 0.0009994952F},
     .disturbance = -2.0F,
+    .dead_band = 0.01F,
 };
 const Parameters reference_parameters{
     .Kp = 0.0196F,
@@ -72,12 +81,16 @@ const Parameters reference_parameters{
     .A = {1.0F, 0.0009994952F, 0.0F, 0.99899054F},
     .B = {0.00037087512F, 4.998317e-07F, 0.7416254F, 0.0009994952F},
     .disturbance = -2.0F,
+    .dead_band = 0.01F,
 };
 Memory memory{};
 
 namespace {
 
 constexpr duet::hardware::Pin led_pin = duet::hardware::pin("LED0");
+constexpr duet::hardware::Pin led_in1_pin = duet::hardware::pin("LED1");
+constexpr duet::hardware::Pin led_in2_pin = duet::hardware::pin("LED2");
+constexpr duet::hardware::Pin led_stby_pin = duet::hardware::pin("LED3");
 constexpr float body_initial[] = {0.0F, 0.0F};
 
 // The page the steps read.
@@ -92,6 +105,10 @@ void initialize() {
   state.release_0_every_10 = 0;
   state.clock.count = std::uint32_t{0};
   state.pid = {0.0F, 0.0F};
+  state.motor_logic.heading = std::int8_t{0};
+  state.motor_logic.reversals = std::uint32_t{0};
+  state.stop_events_trigger_edge.previous = false;
+  state.stop_events_tally.count = std::uint16_t{1};
   for (std::size_t i = 0; i < 2; ++i) state.body[i].state = body_initial[i];
   state.error_to_supervision.reset(0.0F);
   state.duty_to_supervision.reset(0.0F);
@@ -163,6 +180,34 @@ void step_rate_1() {
   signals.compare = duet::blocks::convert<std::uint16_t>(counts);
   // led (GpioOut)
   duet::hardware::gpio_write(led_pin, signals.stop);
+  // motor_logic (Code)
+  {
+    code::motor_logic::Inputs block_inputs{};
+    block_inputs.duty = signals.duty;
+    block_inputs.stop = signals.stop;
+    code::motor_logic::Outputs block_outputs{};
+    code::motor_logic::Parameters block_parameters{};
+    block_parameters.dead_band = p.dead_band;
+    motor_logic(block_inputs, block_outputs, state.motor_logic, block_parameters);
+    signals.in1 = block_outputs.in1;
+    signals.in2 = block_outputs.in2;
+    signals.stby = block_outputs.stby;
+    signals.pwm = block_outputs.pwm;
+    signals.reversals = block_outputs.reversals;
+  }
+  // led_in1 (GpioOut)
+  duet::hardware::gpio_write(led_in1_pin, signals.in1);
+  // led_in2 (GpioOut)
+  duet::hardware::gpio_write(led_in2_pin, signals.in2);
+  // led_stby (GpioOut)
+  duet::hardware::gpio_write(led_stby_pin, signals.stby);
+  // stop_events/trigger_edge (EdgeDetect)
+  bool stop_events_triggered{};
+  stop_events_triggered = state.stop_events_trigger_edge.detect(duet::blocks::Edge::rising, signals.stop);
+  // stop_events/tally (Counter)
+  if (duet::blocks::convert<bool>(stop_events_triggered)) {
+    signals.stops = state.stop_events_tally.output();
+  }
   // input_vector (Mux)
   float u[2]{};
   u[0] = signals.duty;
@@ -175,6 +220,9 @@ void step_rate_1() {
   for (std::size_t i = 0; i < 2; ++i) x_next[i] = duet::blocks::add(a_x[i], b_u[i]);
   state.clock.update(std::uint32_t{4999});
   state.pid.update(signals.error, {p.Kp, p.Ki, p.Kd, p.N, -1.0F, 1.0F}, 0.001F);
+  if (duet::blocks::convert<bool>(stop_events_triggered)) {
+    state.stop_events_tally.update(std::uint16_t{65535});
+  }
   for (std::size_t i = 0; i < 2; ++i) state.body[i].update(x_next[i]);
   state.error_to_supervision.write(signals.error, release_0_every_10);
   state.duty_to_supervision.write(signals.duty, release_0_every_10);

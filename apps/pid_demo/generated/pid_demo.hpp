@@ -2,12 +2,14 @@
 // A closed loop in one model, built the way the thesis' self-balancing robot controller is: a reference angle profile,
 // the robot's discrete PID (P = 0.0196, D = 0.0187, N = 28.234, plus some I) with its output limited, a safety stop
 // that forces the motor to 0 when the angle leaves its range or the supervision asks for it (LED0 shows it), the duty
-// as a timer compare value, and the plant as blocks: a motor turning a load, theta'' = -1.01 theta' + 742 u +
-// disturbance, discretised exactly at 1 ms as x(k+1) = A x(k) + B u(k) (its pole at 1.01/s is where the PID's
-// derivative filter puts a zero, P N / (P + D N)). A supervision task at 10 ms gets the error, the duty and the stop
-// flag through rate transitions, integrates the absolute error while the loop runs, stops the loop when the duty stays
-// saturated, and ramps a setpoint trim in. model_main.cpp measures the generated 1 ms step against the same step
-// written by hand.
+// as a timer compare value, the thesis' motor logic as a Code block (motor_logic.hpp: the TB6612FNG's IN1, IN2 and
+// STBY on LED1..LED3 and its PWM in percent, with a dead band, counting reversals), the safety stops counted by a
+// subsystem triggered on the stop's rising edge, and the plant as blocks: a motor turning a load, theta'' = -1.01
+// theta' + 742 u + disturbance, discretised exactly at 1 ms as x(k+1) = A x(k) + B u(k) (its pole at 1.01/s is where
+// the PID's derivative filter puts a zero, P N / (P + D N)). A supervision task at 10 ms gets the error, the duty and
+// the stop flag through rate transitions, integrates the absolute error while the loop runs, stops the loop when the
+// duty stays saturated, and ramps a setpoint trim in. model_main.cpp measures the generated 1 ms step against the same
+// step written by hand.
 #pragma once
 
 #include <array>
@@ -37,6 +39,7 @@ struct Parameters {
   float A[4];
   float B[4];
   float disturbance;
+  float dead_band;
 };
 
 // Signals that XCP measures or that outlive a step.
@@ -47,6 +50,12 @@ struct Signals {
   bool stop;
   float duty;
   std::uint16_t compare;
+  bool in1;
+  bool in2;
+  bool stby;
+  float pwm;
+  std::uint32_t reversals;
+  std::uint16_t stops;
   float theta;
   float rate;
   float offset;
@@ -57,11 +66,36 @@ struct Signals {
   float offset_next;
 };
 
+namespace code::motor_logic {
+// The structures of Code block 'motor_logic'.
+struct Inputs {
+  float duty;
+  bool stop;
+};
+struct Outputs {
+  bool in1;
+  bool in2;
+  bool stby;
+  float pwm;
+  std::uint32_t reversals;
+};
+struct State {
+  std::int8_t heading;
+  std::uint32_t reversals;
+};
+struct Parameters {
+  float dead_band;
+};
+}  // namespace code::motor_logic
+
 // The blocks' state.
 struct State {
   std::uint32_t release_0_every_10;
   duet::blocks::Counter<std::uint32_t> clock;
   duet::blocks::DiscretePid<float> pid;
+  code::motor_logic::State motor_logic;
+  duet::blocks::EdgeDetector<bool> stop_events_trigger_edge;
+  duet::blocks::Counter<std::uint16_t> stop_events_tally;
   duet::blocks::UnitDelay<float> body[2];
   duet::rt::FastToSlow<float> error_to_supervision;
   duet::rt::FastToSlow<float> duty_to_supervision;

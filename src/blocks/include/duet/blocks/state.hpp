@@ -117,11 +117,11 @@ struct EdgeDetector {
   T previous;
 
   constexpr bool detect(Edge edge, T u) {
-    const bool was_high = is_high(previous);
-    const bool was_low = is_low(previous);
+    const T before = previous;
     previous = u;
-    const bool rising = was_low && is_high(u);
-    const bool falling = was_high && is_low(u);
+    // The input first: while it stays on one side, the compiler need not look at what it was before.
+    const bool rising = is_high(u) && is_low(before);
+    const bool falling = is_low(u) && is_high(before);
     switch (edge) {
       case Edge::rising: return rising;
       case Edge::falling: return falling;

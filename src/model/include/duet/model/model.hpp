@@ -47,6 +47,7 @@ struct SignalDeclaration {
   std::vector<std::size_t> shape;
   std::string unit;
   bool measurable = false;
+  std::string description;
   Location location;
 };
 
