@@ -1,0 +1,101 @@
+// `duet sim` and `duet gen` as a user types them: what they write, and how they refuse.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "duet/support/text_file.hpp"
+#include "run_for_test.hpp"
+
+namespace duet::cli {
+namespace {
+
+const std::string examples = std::string{DUET_SOURCE_DIR} + "/apps/";
+
+class SimGen : public ::testing::Test {
+ protected:
+  void SetUp() override { std::filesystem::create_directories(folder); }
+  void TearDown() override { std::filesystem::remove_all(folder); }
+  [[nodiscard]] std::string in_folder(const std::string& name) const { return (folder / name).string(); }
+  void write(const std::string& name, const std::string& text) const { std::ofstream{folder / name} << text; }
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("duet_sim_gen_" + std::to_string(::getpid()));
+};
+
+TEST_F(SimGen, SimWritesTheCsvAndThePlot) {
+  const Outcome outcome = run({"sim", examples + "step_time/step_time.yaml", "--duration", "0.0005", "--csv",
+                               in_folder("s.csv"), "--plot", in_folder("s.svg")});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.out, "simulated step_time for 0.0005 s (6 base ticks) against plant 'none'; wrote " +
+                             in_folder("s.csv") + " (1 columns) and " + in_folder("s.svg") + "\n");
+  EXPECT_EQ(read_text_file(in_folder("s.csv")).value(),
+            "time_s,level\n0,1\n9.999999999999999e-05,0\n0.00019999999999999998,1\n3e-04,0\n"
+            "0.00039999999999999996,1\n5e-04,0\n");
+  EXPECT_NE(read_text_file(in_folder("s.svg")).value().find("<svg"), std::string::npos);
+}
+
+TEST_F(SimGen, SimAgainstAPlantThatIsAModel) {
+  const Outcome outcome =
+      run({"sim", examples + "thermostat/thermostat.yaml", "--plant", examples + "thermostat/heater.yaml", "--duration",
+           "2", "--csv", in_folder("t.csv"), "--no-plot"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  const std::string csv = read_text_file(in_folder("t.csv")).value();
+  // After 2 s the relay holds the room at the set point of 2000 counts, within a few.
+  const std::string last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
+  const double sample = std::stod(last.substr(last.find(',') + 1));
+  EXPECT_NEAR(sample, 2000, 10) << last;
+}
+
+TEST_F(SimGen, SimRefusesWhatItCannotRun) {
+  Outcome outcome = run({"sim", examples + "step_time/step_time.yaml", "--plant", "non"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, "duet sim: unknown plant 'non' (did you mean 'none'?)\n");
+  outcome = run({"sim", examples + "step_time/step_time.yaml", "-s", "levl", "--no-plot", "--csv", in_folder("x")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_NE(outcome.err.find("'levl'"), std::string::npos) << outcome.err;
+  write("broken.hpp",
+        "template <typename I, typename O, typename S, typename P> void f(const I&, O&, S&, const P&) { x }\n");
+  write("code.yaml",
+        "duet_model: 1\nname: code\nbase_period_us: 1000\nblocks:\n"
+        "  - {name: c, type: Code, function: f, file: broken.hpp, outputs: {y: {signal: y, type: single}}}\n");
+  outcome = run({"sim", in_folder("code.yaml"), "--no-plot", "--csv", in_folder("c.csv")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_NE(outcome.err.find("duet sim: the Code blocks did not compile:"), std::string::npos) << outcome.err;
+  EXPECT_NE(outcome.err.find("broken.hpp"), std::string::npos) << outcome.err;
+  write("heater.yaml", "duet_model: 1\nname: heater\nbase_period_us: 1000\nblocks:\n  - {name: g, type: Gian}\n");
+  outcome = run({"sim", examples + "thermostat/thermostat.yaml", "--plant", in_folder("heater.yaml")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_NE(outcome.err.find("unknown block type 'Gian' (did you mean 'Gain'?)"), std::string::npos) << outcome.err;
+}
+
+TEST_F(SimGen, GenWritesEveryFileAndKeepsUnchangedOnes) {
+  const Outcome outcome = run({"gen", examples + "step_time/step_time.yaml", "-o", in_folder("out")});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.out, "generated step_time into " + in_folder("out") +
+                             ": step_time.hpp step_time.cpp step_time_xcp.hpp step_time.a2l step_time.cmake\n");
+  for (const char* name : {"step_time.hpp", "step_time.cpp", "step_time_xcp.hpp", "step_time.a2l", "step_time.cmake"}) {
+    EXPECT_EQ(read_text_file(in_folder("out/") + name).value(),
+              read_text_file(examples + "step_time/generated/" + name).value())
+        << name;
+  }
+  const auto written = std::filesystem::last_write_time(in_folder("out/step_time.cpp"));
+  ASSERT_EQ(run({"gen", examples + "step_time/step_time.yaml", "-o", in_folder("out")}).exit_code, ExitCode::success);
+  EXPECT_EQ(std::filesystem::last_write_time(in_folder("out/step_time.cpp")), written);
+}
+
+TEST_F(SimGen, GenRefusesAModelWithErrorsAndAFolderItCannotMake) {
+  write("bad.yaml",
+        "duet_model: 1\nname: bad\nbase_period_us: 100\nblocks:\n  - {name: g, type: Gain, inputs: {u: x}}\n");
+  Outcome outcome = run({"gen", in_folder("bad.yaml"), "-o", in_folder("out")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_NE(outcome.err.find("needs parameter 'k'"), std::string::npos) << outcome.err;
+  EXPECT_FALSE(std::filesystem::exists(in_folder("out")));
+  write("file", "");
+  outcome = run({"gen", examples + "step_time/step_time.yaml", "-o", in_folder("file/out")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_NE(outcome.err.find("duet gen: cannot create " + in_folder("file/out")), std::string::npos) << outcome.err;
+}
+
+}  // namespace
+}  // namespace duet::cli
