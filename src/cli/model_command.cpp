@@ -5,8 +5,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -16,6 +18,7 @@
 #include "duet/model/model_file.hpp"
 #include "duet/model/rates.hpp"
 #include "duet/model/render.hpp"
+#include "duet/model/task_set_file.hpp"
 
 namespace duet::cli {
 namespace {
@@ -88,10 +91,42 @@ ExitCode render(const std::string& file, std::string output, bool dot_only, Stre
   return ExitCode::success;
 }
 
+// The tasks as a task file for `duet sched`, with the times the model cannot know given as NAME=MICROSECONDS.
+ExitCode tasks(const std::string& file, const std::vector<std::string>& wcet,
+               const std::vector<std::string>& interarrival, Streams streams) {
+  const auto checked = load_checked_model(file, streams.err);
+  if (!checked) return ExitCode::failure;
+  std::map<std::string, double> wcet_us;
+  std::map<std::string, double> interarrival_us;
+  for (const auto& [given, into] : {std::pair{&wcet, &wcet_us}, std::pair{&interarrival, &interarrival_us}}) {
+    for (const std::string& assignment : *given) {
+      const auto equals = assignment.find('=');
+      double value = 0;
+      const char* number = equals == std::string::npos ? nullptr : assignment.c_str() + equals + 1;
+      char* end = nullptr;
+      if (number != nullptr) value = std::strtod(number, &end);
+      if (number == nullptr || end == number || *end != '\0') {
+        streams.err << "duet model tasks: '" << assignment << "' is not TASK=MICROSECONDS\n";
+        return ExitCode::failure;
+      }
+      (*into)[assignment.substr(0, equals)] = value;
+    }
+  }
+  auto text = model::task_set_file(checked->program, wcet_us, interarrival_us);
+  if (!text) {
+    streams.err << "duet model tasks: " << text.error() << '\n';
+    return ExitCode::failure;
+  }
+  streams.out << text.value();
+  return ExitCode::success;
+}
+
 struct ModelOptions {
   std::string file;
   std::string output;
   bool dot = false;
+  std::vector<std::string> wcet;
+  std::vector<std::string> interarrival;
 };
 
 }  // namespace
@@ -105,8 +140,15 @@ Action define_model_command(CLI::App& command) {
   render_command->add_option("file", options->file, "The model file")->required();
   render_command->add_option("-o,--output", options->output, "The SVG file (default: the model's name with .svg)");
   render_command->add_flag("--dot", options->dot, "Print the diagram in Graphviz's language instead");
-  return [options, render_command](Streams streams) {
+  CLI::App* tasks_command =
+      command.add_subcommand("tasks", "Print the model's tasks as a task file for duet sched (docs/SCHEDULING.md)");
+  tasks_command->add_option("file", options->file, "The model file")->required();
+  tasks_command->add_option("--wcet", options->wcet, "TASK=US: a task's measured execution time (every task)");
+  tasks_command->add_option("--interarrival", options->interarrival,
+                            "TASK=US: the shortest time between an interrupt task's triggers");
+  return [options, render_command, tasks_command](Streams streams) {
     if (render_command->parsed()) return render(options->file, options->output, options->dot, streams);
+    if (tasks_command->parsed()) return tasks(options->file, options->wcet, options->interarrival, streams);
     return check(options->file, streams);
   };
 }

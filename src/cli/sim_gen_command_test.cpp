@@ -97,5 +97,33 @@ TEST_F(SimGen, GenRefusesAModelWithErrorsAndAFolderItCannotMake) {
   EXPECT_NE(outcome.err.find("duet gen: cannot create " + in_folder("file/out")), std::string::npos) << outcome.err;
 }
 
+TEST_F(SimGen, TasksMakeATaskFileForSched) {
+  const std::string model = examples + "pid_demo/pid_demo.yaml";
+  Outcome outcome = run({"model", "tasks", model, "--wcet", "step_rate_1=25"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err,
+            "duet model tasks: task 'step_rate_10' needs its execution time: --wcet step_rate_10=MICROSECONDS (the "
+            "executive measures it on the target: docs/EXECUTIVE.md)\n");
+  EXPECT_EQ(run({"model", "tasks", model, "--wcet", "step_rate_2=1"}).err,
+            "duet model tasks: the model has no task 'step_rate_2' (its tasks: step_rate_1, step_rate_10)\n");
+  EXPECT_EQ(run({"model", "tasks", model, "--wcet", "step_rate_1"}).err,
+            "duet model tasks: 'step_rate_1' is not TASK=MICROSECONDS\n");
+  outcome = run({"model", "tasks", model, "--wcet", "step_rate_1=25", "--wcet", "step_rate_10=12"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.out,
+            "# The tasks of pid_demo for duet sched (docs/SCHEDULING.md), written by duet model tasks.\n"
+            "core: {priority_bits: 4, sub_priority_bits: 0}\ntasks:\n"
+            "  - {name: step_rate_1, source: base timer, period_us: 1000, wcet_us: 25, priority: {group: 1, sub: 0}}\n"
+            "  - {name: step_rate_10, source: base timer, period_us: 10000, wcet_us: 12, priority: {group: 2, sub: "
+            "0}}\n");
+  write("tasks.yaml", outcome.out);
+  outcome = run({"sched", in_folder("tasks.yaml")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_NE(outcome.out.find("step_rate_10        2.0     12.000    10000.0    10000.0     0.0000     0.0012     "
+                             "0.0000     37.000"),
+            std::string::npos)
+      << outcome.out;
+}
+
 }  // namespace
 }  // namespace duet::cli
