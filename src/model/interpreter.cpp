@@ -368,7 +368,6 @@ Compiled any_type(Compiler& c, const ProgramBlock& block) {
 template <typename T>
 Compiled by_input_type(Compiler& c, const ProgramBlock& block) {
   const std::string& type = block.type();
-  const std::size_t n = c.elements_out(block);
   if (type == "Not") {
     const Operand<T> u = c.input<T>(block, 0);
     return {elementwise<bool>(c, block, [u](std::size_t i) { return !blocks::convert<bool>(u[i]); }), {}};
@@ -395,7 +394,6 @@ Compiled by_input_type(Compiler& c, const ProgramBlock& block) {
       return {elementwise<To>(c, block, [u](std::size_t i) { return blocks::convert<To>(u[i]); }), {}};
     });
   }
-  (void)n;
   return {};
 }
 
