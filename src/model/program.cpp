@@ -81,6 +81,7 @@ class ProgramBuilder {
     if (!has_errors(diagnostics)) check_loops(diagnostics);
     if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
     lay_out_tasks(diagnostics);
+    check_rate_transitions(diagnostics);
     if (has_errors(diagnostics)) return {std::nullopt, std::move(diagnostics)};
     return {std::move(program_), std::move(diagnostics)};
   }
@@ -233,6 +234,43 @@ class ProgramBuilder {
                    signal.name + ": " + declaration_of(*outputs[k]) + "}"});
         }
         return;  // one is enough: the rest of the loop follows from it
+      }
+    }
+  }
+
+  // Between periodic rates a transfer is deterministic and needs rates that are multiples of each other; with an
+  // interrupt task on either side it hands over the latest value. `mode` may say which, and must not contradict it.
+  void check_rate_transitions(std::vector<Diagnostic>& diagnostics) const {
+    for (const ProgramBlock& block : program_.blocks) {
+      if (block.type() != "RateTransition" || block.task == at_initialisation ||
+          block.update_task == at_initialisation) {
+        continue;
+      }
+      const Rate& from = program_.tasks[block.update_task].rate;
+      const Rate& to = program_.tasks[block.task].rate;
+      const Argument* mode = block.argument("mode");
+      const std::string name = "RateTransition '" + block.path + "'";
+      const double base = model_.base_period_us;
+      if (from.kind == Rate::Kind::periodic && to.kind == Rate::Kind::periodic) {
+        const std::int64_t fast = std::min(from.multiple, to.multiple);
+        const std::int64_t slow = std::max(from.multiple, to.multiple);
+        if (slow % fast != 0) {
+          diagnostics.push_back({Diagnostic::Severity::error, block.block->location,
+                                 name + " joins rates of " + describe(from, base) + " and " + describe(to, base) +
+                                     ", which are not multiples of each other",
+                                 "make the slower period a multiple of the faster, or pass the value through a "
+                                 "rate both divide"});
+        }
+        if (mode != nullptr && mode->text == "latest") {
+          diagnostics.push_back({Diagnostic::Severity::error, mode->location,
+                                 name + " joins two periodic rates, where the transfer is deterministic",
+                                 "write mode: deterministic, or leave mode out; latest is for interrupt tasks"});
+        }
+      } else if (mode != nullptr && mode->text == "deterministic") {
+        diagnostics.push_back({Diagnostic::Severity::error, mode->location,
+                               name + " joins " + describe(from, base) + " and " + describe(to, base) +
+                                   ", which share no time base: it cannot be deterministic",
+                               "write mode: latest, or leave mode out"});
       }
     }
   }

@@ -224,6 +224,29 @@ const Case cases[] = {
      "  - {name: t, type: RateTransition, period: {multiple: 4}, inputs: {u: one}, outputs: {y: slow}}\n",
      "m.yaml:6:5: error: block 't' (RateTransition) reads signal 'one' of block 'c', a constant (every rate reads a "
      "constant directly: remove the RateTransition)\n"},
+    {"rate_transition_between_rates_not_multiples", "",
+     "  - {name: c, type: Counter, parameters: {limit: 9}, period: {multiple: 2}, outputs: {y: n}}\n"
+     "  - {name: t, type: RateTransition, period: {multiple: 5}, inputs: {u: n}, outputs: {y: m}}\n"
+     "  - {name: g, type: Convert, parameters: {type: double}, inputs: {u: m}, outputs: {y: x}}\n",
+     "m.yaml:6:5: error: RateTransition 't' joins rates of 200 us and 500 us, which are not multiples of each other "
+     "(make the slower period a multiple of the faster, or pass the value through a rate both divide)\n"},
+    {"rate_transition_latest_between_periodic_rates", "",
+     "  - {name: c, type: Counter, parameters: {limit: 9}, outputs: {y: n}}\n"
+     "  - {name: t, type: RateTransition, period: {multiple: 4}, parameters: {mode: latest}, inputs: {u: n}, "
+     "outputs: {y: m}}\n"
+     "  - {name: g, type: Convert, parameters: {type: double}, inputs: {u: m}, outputs: {y: x}}\n",
+     "m.yaml:6:79: error: RateTransition 't' joins two periodic rates, where the transfer is deterministic (write "
+     "mode: deterministic, or leave mode out; latest is for interrupt tasks)\n"},
+    {"rate_transition_deterministic_to_an_interrupt", "",
+     "  - {name: c, type: Counter, parameters: {limit: 9}, outputs: {y: n}}\n"
+     "  - name: isr\n    type: Subsystem\n    trigger: {interrupt: UART0_RX, priority: 2}\n    inputs: {count: "
+     "n_latest}\n"
+     "    blocks:\n"
+     "      - {name: pin, type: Compare, parameters: {operator: \">\", value: 3}, inputs: {u: count}, outputs: {y: "
+     "high}}\n"
+     "  - {name: t, type: RateTransition, parameters: {mode: deterministic}, inputs: {u: n}, outputs: {y: n_latest}}\n",
+     "m.yaml:12:56: error: RateTransition 't' joins 100 us and interrupt UART0_RX, which share no time base: it cannot "
+     "be deterministic (write mode: latest, or leave mode out)\n"},
     {"enabled_by_a_double", "",
      "  - {name: n, type: Counter, parameters: {limit: 3}, outputs: {y: n}}\n"
      "  - {name: level, type: Convert, parameters: {type: double}, inputs: {u: n}, outputs: {y: level}}\n"
