@@ -51,6 +51,11 @@ TEST_F(SimGen, SimRefusesWhatItCannotRun) {
   Outcome outcome = run({"sim", examples + "step_time/step_time.yaml", "--plant", "non"});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
   EXPECT_EQ(outcome.err, "duet sim: unknown plant 'non' (did you mean 'none'?)\n");
+  outcome = run({"sim", examples + "step_time/step_time.yaml", "--duration", "1000000", "--no-plot"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err,
+            "duet sim: recording 1 columns for 10000000001 ticks is more than 100000000 values: simulate a shorter "
+            "time, or record fewer signals (-s)\n");
   outcome = run({"sim", examples + "step_time/step_time.yaml", "-s", "levl", "--no-plot", "--csv", in_folder("x")});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
   EXPECT_NE(outcome.err.find("'levl'"), std::string::npos) << outcome.err;

@@ -184,6 +184,14 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
   result.recording.columns.resize(columns.size());
   const double base_period_s = runner.base_period_s();
   const auto ticks = static_cast<std::uint64_t>(std::floor(options.duration_s / base_period_s + 1e-9)) + 1U;
+  // The recording is kept in memory: refuse one that would not fit rather than run out of it.
+  constexpr std::uint64_t most_values = 100'000'000;  // 800 MB of doubles
+  const std::uint64_t values = ticks * std::max<std::uint64_t>(columns.size() + 1, 1);
+  if (ticks > most_values || values > most_values) {
+    return Failure{"recording " + std::to_string(columns.size()) + " columns for " + std::to_string(ticks) +
+                   " ticks is more than " + std::to_string(most_values) +
+                   " values: simulate a shorter time, or record fewer signals (-s)"};
+  }
   const auto raise = [&runner](std::string_view interrupt) { runner.raise(interrupt); };
   for (std::uint64_t tick = 0; tick < ticks; ++tick) {
     const double now = static_cast<double>(tick) * base_period_s;
