@@ -129,6 +129,14 @@ std::vector<std::size_t> shape(const YAML::Node& node) {
   } else {
     result.push_back(dimension(node));
   }
+  // Far more than a real-time core holds; and a size a typo made huge must not exhaust the PC's memory either.
+  constexpr std::size_t most_elements = 1'000'000;
+  std::size_t elements = 1;
+  for (const std::size_t size : result) elements *= size;
+  if (elements > most_elements) {
+    fail(node, "a size of " + std::to_string(elements) + " elements is more than " + std::to_string(most_elements),
+         "a real-time core holds far less");
+  }
   return result;
 }
 

@@ -60,6 +60,8 @@ struct Malformed {
 
 // Each malformed model and the one message it must get; none may crash the reader.
 const Malformed corpus[] = {
+    {"huge_size", "duet_model: 1\nname: a\nbase_period_us: 1\nparameters:\n  t: {value: 0, size: [100000, 100000]}\n",
+     "m.yaml:5:23: error: a size of 10000000000 elements is more than 1000000 (a real-time core holds far less)"},
     {"not_yaml", "duet_model: 1\nblocks: [\n", "m.yaml:3:1: error: not YAML: end of sequence flow not found"},
     {"not_a_map", "- 1\n", "m.yaml:1:1: error: a model file is a map of fields (it starts with 'duet_model: 1')"},
     {"no_version", "name: a\n",
