@@ -96,6 +96,14 @@ TEST_F(SimGen, GenRefusesAModelWithErrorsAndAFolderItCannotMake) {
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
   EXPECT_NE(outcome.err.find("needs parameter 'k'"), std::string::npos) << outcome.err;
   EXPECT_FALSE(std::filesystem::exists(in_folder("out")));
+  write("reserved.yaml",
+        "duet_model: 1\nname: reserved\nbase_period_us: 100\nblocks:\n"
+        "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: i}}\n"
+        "  - {name: g, type: Gain, parameters: {k: 2}, inputs: {u: i}, outputs: {y: x}}\n");
+  outcome = run({"gen", in_folder("reserved.yaml"), "-o", in_folder("out")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, "duet gen: " + in_folder("reserved.yaml") +
+                             ": signal 'i' has a name that C++ or the generated code reserves: rename it\n");
   write("file", "");
   outcome = run({"gen", examples + "step_time/step_time.yaml", "-o", in_folder("file/out")});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);

@@ -46,14 +46,16 @@ std::pair<std::uint8_t, std::uint8_t> event_cycle(double period_ns) {
 
 const std::set<std::string>& keywords() {
   static const std::set<std::string> words{
-      "alignas",  "alignof", "and",      "asm",       "auto",     "bool",       "break",     "case",       "catch",
-      "char",     "class",   "const",    "constexpr", "continue", "default",    "delete",    "do",         "double",
-      "else",     "enum",    "explicit", "export",    "extern",   "false",      "float",     "for",        "friend",
-      "goto",     "if",      "inline",   "int",       "long",     "mutable",    "namespace", "new",        "noexcept",
-      "not",      "nullptr", "operator", "or",        "private",  "protected",  "public",    "register",   "return",
-      "short",    "signed",  "sizeof",   "static",    "struct",   "switch",     "template",  "this",       "throw",
-      "true",     "try",     "typedef",  "typename",  "union",    "unsigned",   "using",     "virtual",    "void",
-      "volatile", "while",   "xor",      "signals",   "state",    "parameters", "p",         "description"};
+      "alignas", "alignof", "and", "asm", "auto", "bool", "break", "case", "catch", "char", "class", "const",
+      "constexpr", "continue", "default", "delete", "do", "double", "else", "enum", "explicit", "export", "extern",
+      "false", "float", "for", "friend", "goto", "if", "inline", "int", "long", "mutable", "namespace", "new",
+      "noexcept", "not", "nullptr", "operator", "or", "private", "protected", "public", "register", "return", "short",
+      "signed", "sizeof", "static", "struct", "switch", "template", "this", "throw", "true", "try", "typedef",
+      "typename", "union", "unsigned", "using", "virtual", "void", "volatile", "while", "xor",
+      // Names the generated code uses itself.
+      "signals", "state", "parameters", "p", "description", "memory", "tasks", "initialize", "terminate",
+      "parameter_page", "reference_parameters", "parameters_in_use", "block_inputs", "block_outputs",
+      "block_parameters", "value", "i", "std", "duet", "code", "xcp"};
   return words;
 }
 
@@ -86,6 +88,10 @@ std::string comment(const std::string& text) {
   return result;
 }
 
+std::string reserved(const std::string& what, const std::string& name) {
+  return what + " '" + name + "' has a name that C++ or the generated code reserves: rename it";
+}
+
 class FileWriter {
  public:
   FileWriter(const Program& program, std::string source, std::string model_folder)
@@ -103,10 +109,15 @@ class FileWriter {
 
   Result<std::vector<GeneratedFile>> files() {
     for (const Field& field : parameters_) {
-      if (keywords().count(field.name) != 0) return Failure{"parameter '" + field.name + "' is a C++ word: rename it"};
+      if (keywords().count(field.name) != 0) return Failure{reserved("parameter", field.name)};
     }
-    for (const Field& field : signals_) {
-      if (keywords().count(field.name) != 0) return Failure{"signal '" + field.name + "' is a C++ word: rename it"};
+    for (const ProgramSignal& signal : program_.signals) {
+      if (keywords().count(signal.identifier) != 0) return Failure{reserved("signal", signal.name)};
+    }
+    for (const ProgramBlock& block : program_.blocks) {
+      if (Generator::has_state_member(block) && keywords().count(block.identifier) != 0) {
+        return Failure{reserved("block", block.path)};
+      }
     }
     auto priorities = task_priorities(program_);
     if (!priorities) return Failure{priorities.error()};

@@ -55,6 +55,10 @@ bool has_state(const std::string& type) {
 
 }  // namespace
 
+bool Generator::has_state_member(const ProgramBlock& block) {
+  return block.block->code.has_value() || (has_state(block.type()) && !block.outputs.empty());
+}
+
 std::vector<Field> lay_out(std::vector<Field> fields, std::size_t& size) {
   std::size_t end = 0;
   std::size_t alignment = 1;

@@ -36,6 +36,8 @@ class Generator {
   [[nodiscard]] std::vector<Field> signal_fields() const;
   [[nodiscard]] std::vector<Field> parameter_fields() const;
 
+  // Whether the block's name stands bare in the code, as a member of the State structure.
+  [[nodiscard]] static bool has_state_member(const ProgramBlock& block);
   // Declarations of the State structure's members and their reset in initialize().
   [[nodiscard]] std::string state_members() const;
   [[nodiscard]] std::string state_resets() const;
