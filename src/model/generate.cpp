@@ -234,8 +234,11 @@ class FileWriter {
     text += "\nParameters parameters{\n" + initial + "};\nconst Parameters reference_parameters{\n" + initial + "};\n";
     text += "Memory memory{};\n\n";
     text += "namespace {\n\n" + generator_.block_constants();
-    text += "\n// The page the steps read.\n[[maybe_unused]] const Parameters& parameters_in_use() {\n";
-    text += "  return *std::launder(reinterpret_cast<const Parameters*>(parameter_page));\n}\n\n}  // namespace\n\n";
+    text += "\n// The page the steps read (it points at one of the two Parameters objects).\n";
+    text += "[[maybe_unused]] const Parameters& parameters_in_use() {\n";
+    text +=
+        "  return *std::launder(static_cast<const Parameters*>(static_cast<const void*>(parameter_page)));\n}\n\n}  // "
+        "namespace\n\n";
     text += "void initialize() {\n  parameter_page = reinterpret_cast<const std::uint8_t*>(&parameters);\n";
     text += generator_.state_resets();
     std::string constants;

@@ -93,9 +93,9 @@ constexpr duet::hardware::Pin led_in2_pin = duet::hardware::pin("LED2");
 constexpr duet::hardware::Pin led_stby_pin = duet::hardware::pin("LED3");
 constexpr float body_initial[] = {0.0F, 0.0F};
 
-// The page the steps read.
+// The page the steps read (it points at one of the two Parameters objects).
 [[maybe_unused]] const Parameters& parameters_in_use() {
-  return *std::launder(reinterpret_cast<const Parameters*>(parameter_page));
+  return *std::launder(static_cast<const Parameters*>(static_cast<const void*>(parameter_page)));
 }
 
 }  // namespace

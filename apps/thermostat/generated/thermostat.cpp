@@ -34,9 +34,9 @@ namespace {
 
 constexpr duet::hardware::Pin heater_pin = duet::hardware::pin("LED0");
 
-// The page the steps read.
+// The page the steps read (it points at one of the two Parameters objects).
 [[maybe_unused]] const Parameters& parameters_in_use() {
-  return *std::launder(reinterpret_cast<const Parameters*>(parameter_page));
+  return *std::launder(static_cast<const Parameters*>(static_cast<const void*>(parameter_page)));
 }
 
 }  // namespace
