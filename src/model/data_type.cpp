@@ -36,6 +36,14 @@ TypeFacts facts(DataType type) {
 }  // namespace
 
 std::string_view type_name(DataType type) { return facts(type).name; }
+
+std::optional<DataType> parse_type_name(std::string_view name) {
+  for (const DataType type : {DataType::float64, DataType::float32, DataType::int8, DataType::int16, DataType::int32,
+                              DataType::uint8, DataType::uint16, DataType::uint32, DataType::boolean}) {
+    if (facts(type).name == name) return type;
+  }
+  return std::nullopt;
+}
 std::string_view cpp_type(DataType type) { return facts(type).cpp; }
 std::size_t size_of(DataType type) { return facts(type).size; }
 bool is_floating(DataType type) { return type == DataType::float64 || type == DataType::float32; }

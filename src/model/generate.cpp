@@ -32,8 +32,10 @@ std::string quoted(const std::string& text) {
   return result + "\"";
 }
 
-// A period as XCP's event cycle and unit (10^unit ns) with the cycle in a byte.
-std::pair<std::uint8_t, std::uint8_t> event_cycle(double period_ns) {
+// A task's period as XCP's event cycle and unit (10^unit ns) with the cycle in a byte; 0, 0 for an interrupt task.
+std::pair<std::uint8_t, std::uint8_t> event_cycle(const Program& program, const ProgramTask& task) {
+  if (task.rate.kind != Rate::Kind::periodic) return {0, 0};
+  const double period_ns = static_cast<double>(task.rate.multiple) * program.model->base_period_us * 1000.0;
   for (std::uint8_t unit = 9;; --unit) {
     const double step = std::pow(10.0, unit);
     const double cycle = period_ns / step;
@@ -280,10 +282,7 @@ class FileWriter {
         "          .size = sizeof(Signals),\n          .memory = reinterpret_cast<std::uint8_t*>(&signals)};\n}\n\n";
     text += "inline constexpr duet::xcp::EventChannel events[] = {\n";
     for (const ProgramTask& task : program_.tasks) {
-      const double period_ns = task.rate.kind == Rate::Kind::periodic
-                                   ? static_cast<double>(task.rate.multiple) * program_.model->base_period_us * 1000.0
-                                   : 0.0;
-      const auto [cycle, unit] = event_cycle(period_ns);
+      const auto [cycle, unit] = event_cycle(program_, task);
       text += "    {.name = " + quoted(task.name) + ", .time_cycle = " + std::to_string(cycle) +
               ", .time_unit = " + std::to_string(unit) + "},\n";
     }
@@ -331,10 +330,7 @@ class FileWriter {
     }
     for (std::size_t index = 0; index < program_.tasks.size(); ++index) {
       const ProgramTask& task = program_.tasks[index];
-      const double period_ns = task.rate.kind == Rate::Kind::periodic
-                                   ? static_cast<double>(task.rate.multiple) * program_.model->base_period_us * 1000.0
-                                   : 0.0;
-      const auto [cycle, unit] = event_cycle(period_ns);
+      const auto [cycle, unit] = event_cycle(program_, task);
       description.events.push_back({task.name, static_cast<std::uint16_t>(index), cycle, unit, 0});
     }
     return banner("/*", source_, " */") + xcp::host::write_a2l(description);

@@ -94,16 +94,12 @@ Value literal(const YAML::Node& node, const std::string& what) {
 }
 
 DataType data_type(const YAML::Node& node) {
-  static const std::map<std::string, DataType> types{
-      {"double", DataType::float64}, {"single", DataType::float32}, {"int8", DataType::int8},
-      {"int16", DataType::int16},    {"int32", DataType::int32},    {"uint8", DataType::uint8},
-      {"uint16", DataType::uint16},  {"uint32", DataType::uint32},  {"boolean", DataType::boolean}};
-  const auto found = node.IsScalar() ? types.find(node.Scalar()) : types.end();
-  if (found == types.end()) {
+  const auto found = node.IsScalar() ? parse_type_name(node.Scalar()) : std::nullopt;
+  if (!found) {
     fail(node, "unknown data type '" + (node.IsScalar() ? node.Scalar() : std::string{"?"}) + "'",
          "double, single, int8, int16, int32, uint8, uint16, uint32 or boolean");
   }
-  return found->second;
+  return *found;
 }
 
 // A value of the given size: a scalar fills it (a table of 4096 zeros is `value: 0, size: 4096`); a list must have it.

@@ -27,14 +27,9 @@ std::optional<SignalType> first_known(const KnownTypes& inputs) {
 }
 
 std::optional<DataType> word_type(const ProgramBlock& block) {
-  static const std::map<std::string, DataType> names{
-      {"double", DataType::float64}, {"single", DataType::float32}, {"int8", DataType::int8},
-      {"int16", DataType::int16},    {"int32", DataType::int32},    {"uint8", DataType::uint8},
-      {"uint16", DataType::uint16},  {"uint32", DataType::uint32},  {"boolean", DataType::boolean}};
   const Argument* type = block.argument("type");
   if (type == nullptr) return std::nullopt;
-  const auto found = names.find(type->text);
-  return found == names.end() ? std::nullopt : std::optional{found->second};
+  return parse_type_name(type->text);
 }
 
 std::size_t size_argument(const ProgramBlock& block, const char* name) {
