@@ -58,5 +58,17 @@ TEST(BlocksMatrixMultiply, EmptyInnerDimensionGivesZeros) {
   EXPECT_EQ(y, (std::array<double, 4>{0, 0, 0, 0}));
 }
 
+TEST(BlocksMatrixTranspose, TwoByThreeBecomesThreeByTwo) {
+  // [1 2 3; 4 5 6]^T = [1 4; 2 5; 3 6]
+  const std::array<double, 6> a{1, 2, 3, 4, 5, 6};
+  std::array<double, 6> y{};
+  matrix_transpose(a.data(), y.data(), 2, 3);
+  EXPECT_EQ(y, (std::array<double, 6>{1, 4, 2, 5, 3, 6}));
+  const std::array<bool, 2> column{true, false};
+  std::array<bool, 2> row{};
+  matrix_transpose(column.data(), row.data(), 2, 1);
+  EXPECT_EQ(row, column);  // a vector's transpose has the same elements in the same order
+}
+
 }  // namespace
 }  // namespace duet::blocks

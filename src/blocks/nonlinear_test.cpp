@@ -13,6 +13,8 @@ static_assert(saturate(12, 0, 10) == 10);
 static_assert(absolute<std::int8_t>(-128) == 127);
 static_assert(absolute(-0.0) == 0.0);
 static_assert(select(false, 1.0F, 2.0F) == 2.0F);
+static_assert(sign(-3.5) == -1.0 && sign<std::uint8_t>(7) == 1 && sign(0) == 0);
+static_assert(minimum(2, -3) == -3 && maximum(2.5F, -3.0F) == 2.5F);
 
 TEST(BlocksSaturate, LimitsToTheBoundsAndPassesEverythingBetween) {
   EXPECT_EQ(saturate(11.0, -1.0, 10.0), 10.0);
@@ -65,6 +67,63 @@ TEST(BlocksSelect, ChoosesOnOrOff) {
   EXPECT_EQ(select(false, 1.5, -1.5), -1.5);
   EXPECT_EQ(select<std::int8_t>(true, -128, 127), -128);
   EXPECT_TRUE(select(false, false, true));
+}
+
+TEST(BlocksSign, MinusOneZeroOrOne) {
+  EXPECT_EQ(sign(-0.25), -1.0);
+  EXPECT_EQ(sign(1e-300), 1.0);
+  EXPECT_EQ(sign(-std::numeric_limits<float>::infinity()), -1.0F);
+  EXPECT_EQ(sign(std::numeric_limits<float>::denorm_min()), 1.0F);
+  EXPECT_EQ(sign<std::int8_t>(-128), -1);
+  EXPECT_EQ(sign<std::int8_t>(127), 1);
+  EXPECT_EQ(sign(std::numeric_limits<std::int32_t>::min()), -1);
+  EXPECT_EQ(sign<std::int16_t>(0), 0);
+  EXPECT_EQ(sign<std::uint32_t>(0), 0U);
+  EXPECT_EQ(sign<std::uint32_t>(4000000000U), 1U);
+}
+
+TEST(BlocksSign, ZerosAndNanGivePositiveZero) {
+  for (const double u :
+       {0.0, -0.0, std::numeric_limits<double>::quiet_NaN(), -std::numeric_limits<double>::quiet_NaN()}) {
+    const double s = sign(u);
+    EXPECT_EQ(s, 0.0) << u;
+    EXPECT_FALSE(std::signbit(s)) << u;
+  }
+  EXPECT_FALSE(std::signbit(sign(-0.0F)));
+  EXPECT_EQ(sign(std::numeric_limits<float>::quiet_NaN()), 0.0F);
+}
+
+TEST(BlocksMinimumMaximum, PlainValues) {
+  EXPECT_EQ(minimum(1.5, -2.0), -2.0);
+  EXPECT_EQ(minimum(-2.0, 1.5), -2.0);
+  EXPECT_EQ(maximum(1.5, -2.0), 1.5);
+  EXPECT_EQ(maximum(-2.0, 1.5), 1.5);
+  EXPECT_EQ(minimum<std::int8_t>(-128, 127), -128);
+  EXPECT_EQ(maximum<std::int8_t>(-128, 127), 127);
+  EXPECT_EQ(minimum<std::uint16_t>(65535, 3), 3);
+  EXPECT_EQ(maximum<std::uint32_t>(0, 4000000000U), 4000000000U);
+  EXPECT_EQ(minimum(-std::numeric_limits<float>::infinity(), 0.0F), -std::numeric_limits<float>::infinity());
+  EXPECT_EQ(maximum(std::numeric_limits<float>::infinity(), 0.0F), std::numeric_limits<float>::infinity());
+}
+
+TEST(BlocksMinimumMaximum, OneNanGivesTheOtherOperand) {
+  const double nan_value = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(minimum(nan_value, 3.0), 3.0);
+  EXPECT_EQ(minimum(3.0, nan_value), 3.0);
+  EXPECT_EQ(maximum(nan_value, -3.0), -3.0);
+  EXPECT_EQ(maximum(-3.0, nan_value), -3.0);
+  const float nan_float = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(minimum(nan_float, -1.0F), -1.0F);
+  EXPECT_EQ(maximum(2.0F, nan_float), 2.0F);
+  EXPECT_TRUE(std::isnan(minimum(nan_value, nan_value)));
+  EXPECT_TRUE(std::isnan(maximum(nan_float, nan_float)));
+}
+
+TEST(BlocksMinimumMaximum, EqualOperandsGiveTheFirst) {
+  EXPECT_FALSE(std::signbit(minimum(0.0, -0.0)));
+  EXPECT_TRUE(std::signbit(minimum(-0.0, 0.0)));
+  EXPECT_FALSE(std::signbit(maximum(0.0F, -0.0F)));
+  EXPECT_TRUE(std::signbit(maximum(-0.0F, 0.0F)));
 }
 
 }  // namespace

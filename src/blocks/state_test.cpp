@@ -172,6 +172,138 @@ TEST(BlocksDiscretePid, MatchesTheReferenceBitForBitOverFiveSteps) {
   EXPECT_GT(in_double.integrator_order_mattered + in_float.integrator_order_mattered, 0);
 }
 
+TEST(BlocksFilteredDerivative, HandComputedSteps) {
+  // gain 0.5, N = 4, Ts = 0.25 (N * Ts = 1), filter from 0:
+  // u = 1:  y = 4 * (0.5 - 0) = 2;       filter = 0 + 0.25 * 2 = 0.5
+  // u = 1:  y = 4 * (0.5 - 0.5) = 0;     filter = 0.5
+  // u = -1: y = 4 * (-0.5 - 0.5) = -4;   filter = 0.5 - 1 = -0.5
+  // u = -1: y = 4 * (-0.5 + 0.5) = 0;    filter = -0.5
+  FilteredDerivative<double> derivative{0.0};
+  std::vector<double> outputs;
+  for (const double u : {1.0, 1.0, -1.0, -1.0}) {
+    outputs.push_back(derivative.output(u, 0.5, 4.0));
+    derivative.update(u, 0.5, 4.0, 0.25);
+  }
+  EXPECT_EQ(outputs, (std::vector<double>{2.0, 0.0, -4.0, 0.0}));
+  EXPECT_EQ(derivative.filter, -0.5);
+  // gain 1, N = 4, Ts = 0.125 (N * Ts = 0.5): the filter approaches gain * u gradually.
+  // u = 1: y = 4 * (1 - 0) = 4;    filter = 0 + 0.125 * 4 = 0.5
+  // u = 1: y = 4 * (1 - 0.5) = 2;  filter = 0.5 + 0.125 * 2 = 0.75
+  FilteredDerivative<float> gradual{0.0F};
+  EXPECT_EQ(gradual.output(1.0F, 1.0F, 4.0F), 4.0F);
+  gradual.update(1.0F, 1.0F, 4.0F, 0.125F);
+  EXPECT_EQ(gradual.filter, 0.5F);
+  EXPECT_EQ(gradual.output(1.0F, 1.0F, 4.0F), 2.0F);
+  gradual.update(1.0F, 1.0F, 4.0F, 0.125F);
+  EXPECT_EQ(gradual.filter, 0.75F);
+}
+
+TEST(BlocksFilteredDerivative, IsThePidsDerivativeBitForBit) {
+  // A PID with only D and no limits computes add(add(0 * e, 0), derivative) = derivative (up to the sign of a zero).
+  const PidGains<float> gains{.p = 0.0F, .i = 0.0F, .d = 0.11F, .n = 30.0F, .lower = -1e30F, .upper = 1e30F};
+  DiscretePid<float> pid{0.0F, 0.013F};
+  FilteredDerivative<float> derivative{0.013F};
+  for (const float u : {0.01F, 0.45F, -0.3F, 1.7F, 0.05F}) {
+    EXPECT_EQ(derivative.output(u, gains.d, gains.n), pid.output(u, gains));
+    derivative.update(u, gains.d, gains.n, 0.01F);
+    pid.update(u, gains, 0.01F);
+    EXPECT_EQ(derivative.filter, pid.filter);
+  }
+}
+
+struct PidRun {
+  std::vector<double> outputs;
+  std::vector<double> integrators;
+};
+
+PidRun run_pid(DiscretePid<double> pid, const PidGains<double>& gains, double period_s, bool clamped,
+               std::initializer_list<double> errors) {
+  PidRun run;
+  for (const double error : errors) {
+    run.outputs.push_back(pid.output(error, gains));
+    if (clamped) {
+      pid.update_clamped(error, gains, period_s);
+    } else {
+      pid.update(error, gains, period_s);
+    }
+    run.integrators.push_back(pid.integrator);
+  }
+  return run;
+}
+
+TEST(BlocksDiscretePidClamped, StopsIntegratingIntoSaturationAndComesBackAtOnce) {
+  // P = 1, I = 1, no D (n = 0 keeps the filter at 0), Ts = 1, limits [-2, 2], integrator from 0. unlimited = e + I.
+  const PidGains<double> gains{.p = 1.0, .i = 1.0, .d = 0.0, .n = 0.0, .lower = -2.0, .upper = 2.0};
+  const auto errors = {1.0, 1.0, 1.0, 1.0, -1.0, -1.0};
+  // clamped:  e = 1:  unlimited 1 + 0 = 1, inside          y = 1   I = 1
+  //           e = 1:  unlimited 1 + 1 = 2, at the limit     y = 2   I = 2   (exactly at a limit integrates)
+  //           e = 1:  unlimited 1 + 2 = 3 > 2, increment 1 > 0: clamped   y = 2   I = 2
+  //           e = 1:  the same                              y = 2   I = 2
+  //           e = -1: unlimited -1 + 2 = 1                  y = 1   I = 1
+  //           e = -1: unlimited -1 + 1 = 0                  y = 0   I = 0
+  const PidRun clamped = run_pid({0.0, 0.0}, gains, 1.0, true, errors);
+  EXPECT_EQ(clamped.outputs, (std::vector<double>{1.0, 2.0, 2.0, 2.0, 1.0, 0.0}));
+  EXPECT_EQ(clamped.integrators, (std::vector<double>{1.0, 2.0, 2.0, 2.0, 1.0, 0.0}));
+  // update() winds up: I = 1, 2, 3, 4; then unlimited -1 + 4 = 3 stays saturated (y = 2, I = 3), then -1 + 3 = 2.
+  const PidRun wound_up = run_pid({0.0, 0.0}, gains, 1.0, false, errors);
+  EXPECT_EQ(wound_up.outputs, (std::vector<double>{1.0, 2.0, 2.0, 2.0, 2.0, 2.0}));
+  EXPECT_EQ(wound_up.integrators, (std::vector<double>{1.0, 2.0, 3.0, 4.0, 3.0, 2.0}));
+}
+
+TEST(BlocksDiscretePidClamped, LowerLimitTooAndAnIncrementAgainstTheExcessIntegrates) {
+  const PidGains<double> gains{.p = 1.0, .i = 1.0, .d = 0.0, .n = 0.0, .lower = -2.0, .upper = 2.0};
+  // From I = -5: e = -1: unlimited -6 < -2, increment -1 < 0: clamped, y = -2, I = -5.
+  //              e = 1:  unlimited -4 < -2 but increment 1 > 0 pulls out: y = -2, I = -4.
+  //              e = 1:  unlimited -3: y = -2, I = -3;  e = 1: unlimited -2 (at the limit): y = -2, I = -2;
+  //              e = 1:  unlimited -1: y = -1, I = -1.
+  const PidRun lower = run_pid({-5.0, 0.0}, gains, 1.0, true, {-1.0, 1.0, 1.0, 1.0, 1.0});
+  EXPECT_EQ(lower.outputs, (std::vector<double>{-2.0, -2.0, -2.0, -2.0, -1.0}));
+  EXPECT_EQ(lower.integrators, (std::vector<double>{-5.0, -4.0, -3.0, -2.0, -1.0}));
+  // Above the upper limit from I = 5 with e = -1: unlimited 4 > 2, increment -1 < 0: integrates, I = 4.
+  const PidRun upper = run_pid({5.0, 0.0}, gains, 1.0, true, {-1.0, -1.0, -1.0, -1.0});
+  EXPECT_EQ(upper.outputs, (std::vector<double>{2.0, 2.0, 2.0, 1.0}));  // unlimited 4, 3, 2, 1
+  EXPECT_EQ(upper.integrators, (std::vector<double>{4.0, 3.0, 2.0, 1.0}));
+}
+
+TEST(BlocksDiscretePidClamped, TheIncrementsSignCountsNotTheErrors) {
+  // A negative integral gain: e = 1 gives increment -1 * 1 * 1 = -1 while unlimited = 1 * 1 + 4 = 5 > 2, so
+  // integrating pulls the output back toward the limit: not clamped, I = 3. e = -1: unlimited -1 + 3 = 2, at the
+  // limit: I = 3 + 1 = 4. e = -1 again: unlimited 3 > 2 and increment +1 > 0: clamped, I = 4.
+  const PidGains<double> gains{.p = 1.0, .i = -1.0, .d = 0.0, .n = 0.0, .lower = -2.0, .upper = 2.0};
+  const PidRun run = run_pid({4.0, 0.0}, gains, 1.0, true, {1.0, -1.0, -1.0});
+  EXPECT_EQ(run.outputs, (std::vector<double>{2.0, 2.0, 2.0}));
+  EXPECT_EQ(run.integrators, (std::vector<double>{3.0, 4.0, 4.0}));
+}
+
+TEST(BlocksDiscretePidClamped, WithTheDerivativeTheFilterUpdatesAsWithoutClamping) {
+  // The hand-computed run of HandComputedStepsWithSaturation, clamped: steps 0 to 2 are the same (no saturation);
+  // step 3: D = 4 * (1 + 0.5) = 6, unlimited 4 + 0.5 + 6 = 10.5 > 5 with increment 4 * 0.25 * 2 = 2 > 0: clamped,
+  //         y = 5, F = -0.5 + 0.25 * 6 = 1, I stays 0.5
+  // step 4: D = 4 * (0 - 1) = -4, y = 0 + 0.5 - 4 = -3.5, F = 0, I = 0.5 + 0 = 0.5
+  const PidGains<double> gains{.p = 2.0, .i = 4.0, .d = 0.5, .n = 4.0, .lower = -5.0, .upper = 5.0};
+  DiscretePid<double> pid{0.0, 0.0};
+  std::vector<double> outputs;
+  for (const double error : {1.0, 0.5, -1.0, 2.0, 0.0}) {
+    outputs.push_back(pid.output(error, gains));
+    pid.update_clamped(error, gains, 0.25);
+  }
+  EXPECT_EQ(outputs, (std::vector<double>{4.0, 1.0, -3.5, 5.0, -3.5}));
+  EXPECT_EQ(pid.integrator, 0.5);
+  EXPECT_EQ(pid.filter, 0.0);
+}
+
+TEST(BlocksDiscretePidClamped, WithoutSaturationItIsUpdateBitForBit) {
+  const PidGains<float> gains{.p = 1.3F, .i = 0.7F, .d = 0.11F, .n = 30.0F, .lower = -20.0F, .upper = 20.0F};
+  DiscretePid<float> plain{0.1F, -0.05F};
+  DiscretePid<float> clamped{0.1F, -0.05F};
+  for (const float error : {0.01F, 0.45F, -0.3F, 1.7F, 0.05F}) {
+    plain.update(error, gains, 0.01F);
+    clamped.update_clamped(error, gains, 0.01F);
+    EXPECT_EQ(clamped.integrator, plain.integrator);
+    EXPECT_EQ(clamped.filter, plain.filter);
+  }
+}
+
 TEST(BlocksCounter, CountsUpToTheLimitAndWraps) {
   Counter<std::uint8_t> counter{0};
   std::vector<int> outputs;

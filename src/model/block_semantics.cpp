@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cmath>
 #include <utility>
 
 namespace duet::model {
@@ -13,6 +14,51 @@ std::string sum_signs(const ProgramBlock& block) {
   text.erase(std::remove(text.begin(), text.end(), '|'), text.end());  // Simulink writes "|+-"
   text.resize(std::max(text.size(), block.inputs.size()), '+');
   return text;
+}
+
+std::string product_signs(const ProgramBlock& block) {
+  const Argument* signs = block.argument("signs");
+  std::string text = signs == nullptr ? std::string{} : signs->text;
+  text.resize(std::max(text.size(), block.inputs.size()), '*');
+  return text;
+}
+
+namespace {
+
+double number(const ProgramBlock& block, const char* name, double fallback) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr || argument->value.elements.empty()) return fallback;
+  return argument->value.elements.front();
+}
+
+std::uint32_t steps_of(double seconds, double period_s) {
+  if (!(period_s > 0) || !(seconds > 0)) return 0;
+  const double steps = std::round(seconds / period_s);
+  return steps >= 4294967295.0 ? 4294967295U : static_cast<std::uint32_t>(steps);
+}
+
+}  // namespace
+
+SourceSteps source_steps(const ProgramBlock& block) {
+  if (block.type() == "Step") return {steps_of(number(block, "time_s", 0), block.period_s), 0, 0};
+  return {steps_of(number(block, "delay_s", 0), block.period_s), steps_of(number(block, "period_s", 0), block.period_s),
+          steps_of(number(block, "width_s", 0), block.period_s)};
+}
+
+blocks::Endian endian_of(const ProgramBlock& block) {
+  const Argument* endian = block.argument("endian");
+  return endian != nullptr && endian->text == "big" ? blocks::Endian::big : blocks::Endian::little;
+}
+
+std::size_t unpack_offset(const ProgramBlock& block) { return static_cast<std::size_t>(number(block, "offset", 0)); }
+
+std::size_t block_window(const ProgramBlock& block) {
+  return static_cast<std::size_t>(std::max(1.0, number(block, "window", 1)));
+}
+
+bool anti_windup_clamping(const ProgramBlock& block) {
+  const Argument* anti_windup = block.argument("anti_windup");
+  return anti_windup != nullptr && anti_windup->text == "clamping";
 }
 
 MatrixSizes matrix_sizes(const Program& program, const ProgramBlock& block) {

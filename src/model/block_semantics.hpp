@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 
+#include "duet/blocks/bytes.hpp"
 #include "duet/blocks/logic.hpp"
 #include "duet/blocks/state.hpp"
 #include "duet/model/program.hpp"
@@ -18,6 +19,22 @@ inline constexpr double pid_default_filter = 100.0;
 
 // A Sum's signs, one per input ("+-" subtracts u2 from u1); all '+' unless given.
 [[nodiscard]] std::string sum_signs(const ProgramBlock& block);
+
+// A Product's signs, one per input ("*/" divides u1 by u2); all '*' unless given.
+[[nodiscard]] std::string product_signs(const ProgramBlock& block);
+
+// A Step's or PulseGenerator's times in steps of its own rate (rounded to the nearest step).
+struct SourceSteps {
+  std::uint32_t start = 0;   // Step: the step of the change; PulseGenerator: the delay
+  std::uint32_t period = 0;  // PulseGenerator
+  std::uint32_t width = 0;   // PulseGenerator
+};
+[[nodiscard]] SourceSteps source_steps(const ProgramBlock& block);
+
+[[nodiscard]] blocks::Endian endian_of(const ProgramBlock& block);   // little unless given
+[[nodiscard]] std::size_t unpack_offset(const ProgramBlock& block);  // a ByteUnpack's first byte
+[[nodiscard]] std::size_t block_window(const ProgramBlock& block);   // a MovingAverage's window, 1 or more
+[[nodiscard]] bool anti_windup_clamping(const ProgramBlock& block);  // a DiscretePid's anti_windup: clamping
 
 struct MatrixSizes {
   std::size_t rows = 1;

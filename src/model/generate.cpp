@@ -150,11 +150,30 @@ class FileWriter {
     return text + "static_assert(sizeof(" + structure + ") == " + std::to_string(size) + ");\n";
   }
 
+  // The block library's headers for the block types the model uses, beyond those every model includes.
+  std::string used_headers(std::initializer_list<std::pair<std::string_view, std::string_view>> headers) const {
+    std::set<std::string_view> used;
+    for (const auto& [type, header] : headers) {
+      const bool uses = std::any_of(program_.blocks.begin(), program_.blocks.end(),
+                                    [type = type](const ProgramBlock& block) { return block.type() == type; });
+      if (uses) used.insert(header);
+    }
+    std::string text;
+    for (const std::string_view header : used) text += "#include \"duet/blocks/" + std::string{header} + ".hpp\"\n";
+    return text;
+  }
+
   std::string header() const {
     std::string text = banner("//", source_);
     text += comment(program_.model->description);
     text += "#pragma once\n\n#include <array>\n#include <cstddef>\n#include <cstdint>\n\n";
     text += "#include \"duet/blocks/state.hpp\"\n#include \"duet/rt/rate_transition.hpp\"\n";
+    text += used_headers({{"Step", "sources"},
+                          {"PulseGenerator", "sources"},
+                          {"TransferFunction", "transfer_function"},
+                          {"StateSpace", "state_space"},
+                          {"MovingAverage", "average"},
+                          {"KalmanFilter", "kalman"}});
     text +=
         "#include \"duet/hardware/hardware.hpp\"\n#include \"duet/rt/task_table.hpp\"\n\nnamespace " + name_ + " {\n\n";
     text += "// The tunable parameters: the calibration segment. `parameters` is the working page (RAM) that XCP\n";
@@ -220,6 +239,8 @@ class FileWriter {
     text += "#include \"duet/blocks/logic.hpp\"\n#include \"duet/blocks/matrix.hpp\"\n";
     text += "#include \"duet/blocks/nonlinear.hpp\"\n#include \"duet/blocks/table.hpp\"\n";
     text += "#include \"duet/blocks/trigonometry.hpp\"\n#include \"duet/hardware/hardware.hpp\"\n";
+    text += used_headers(
+        {{"BytePack", "bytes"}, {"ByteUnpack", "bytes"}, {"Mean", "average"}, {"StateFeedback", "state_space"}});
     std::set<std::string> headers;  // the Code blocks' functions, from the model's folder
     for (const ProgramBlock& block : program_.blocks) {
       if (block.block->code) headers.insert(block.block->code->file);

@@ -50,7 +50,9 @@ std::string logic_name(blocks::LogicOperator op) {
 
 bool has_state(const std::string& type) {
   return type == "UnitDelay" || type == "EdgeDetect" || type == "Counter" || type == "DiscreteIntegrator" ||
-         type == "DiscreteDerivative" || type == "DiscretePid" || type == "RateTransition";
+         type == "DiscreteDerivative" || type == "DiscretePid" || type == "RateTransition" || type == "Step" ||
+         type == "PulseGenerator" || type == "FilteredDerivative" || type == "TransferFunction" ||
+         type == "StateSpace" || type == "MovingAverage" || type == "KalmanFilter";
 }
 
 }  // namespace
@@ -218,6 +220,14 @@ std::string Generator::state_members() const {
       text += "  duet::blocks::EdgeDetector<" + type_of(input) + "> " + block.identifier + ";\n";
       continue;
     }
+    if (block.type() == "Step" || block.type() == "PulseGenerator") {
+      text += "  duet::blocks::StepCounter " + block.identifier + ";\n";
+      continue;
+    }
+    if (const std::string sized = sized_state_type(block); !sized.empty()) {
+      text += "  " + sized + " " + block.identifier + ";\n";
+      continue;
+    }
     text += "  duet::blocks::" + block.type() + "<" + element_type + "> " + block.identifier + count + ";\n";
   }
   return text;
@@ -262,6 +272,12 @@ std::string Generator::state_resets() const {
       text += for_each(n, state(block, "i") + ".previous = " + literal(type.type, 0) + ";");
     } else if (kind == "DiscretePid") {
       text += for_each(n, state(block, "i") + " = {" + literal(type.type, 0) + ", " + literal(type.type, 0) + "};");
+    } else if (kind == "Step" || kind == "PulseGenerator") {
+      text += "  state." + block.identifier + ".k = 0;\n";
+    } else if (kind == "FilteredDerivative") {
+      text += for_each(n, state(block, "i") + ".filter = " + literal(type.type, 0) + ";");
+    } else {
+      text += sized_state_reset(block);
     }
   }
   return text;
@@ -274,8 +290,11 @@ std::string Generator::block_constants() const {
       text += "constexpr duet::hardware::Pin " + block.identifier + "_pin = duet::hardware::pin(\"" +
               block.argument("pin")->text + "\");\n";
     }
+    const bool matrices = block.type() == "TransferFunction" || block.type() == "StateSpace" ||
+                          block.type() == "KalmanFilter" || block.type() == "StateFeedback";
     for (const auto& [name, argument] : block.arguments) {
-      if (argument.kind != Argument::Kind::literal || argument.value.elements.size() < 2) continue;
+      if (argument.kind != Argument::Kind::literal || argument.value.elements.empty()) continue;
+      if (argument.value.elements.size() < 2 && !(matrices && name != "initial" && name != "covariance")) continue;
       const DataType type = block.type() == "Compare" ? program_.signals[block.inputs[0]].type.type
                             : block.type() == "Lookup" || block.outputs.empty()
                                 ? DataType::float64
@@ -348,9 +367,13 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
   if (type == "Gain") return assign("duet::blocks::gain(" + in(0, "i") + ", " + argument(block, "k", 1, t, "i") + ")");
   if (type == "Sum" || type == "Product") {
     const std::string signs = sum_signs(block);
+    const std::string factors = product_signs(block);
     std::string value = type == "Sum" && signs[0] == '-' ? "duet::blocks::negate(" + in(0, "i") + ")" : in(0, "i");
+    if (type == "Product" && factors[0] == '/') value = "duet::blocks::divide(" + literal(t, 1) + ", " + value + ")";
     for (std::size_t k = 1; k < block.inputs.size(); ++k) {
-      const char* operation = type == "Product" ? "multiply" : signs[k] == '-' ? "subtract" : "add";
+      const char* operation = type == "Product" ? (factors[k] == '/' ? "divide" : "multiply")
+                              : signs[k] == '-' ? "subtract"
+                                                : "add";
       value = "duet::blocks::" + std::string{operation} + "(" + value + ", " + in(k, "i") + ")";
     }
     return assign(value);
@@ -360,6 +383,29 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
                   argument(block, "upper", infinity, t, "i") + ")");
   }
   if (type == "Abs") return assign("duet::blocks::absolute(" + in(0, "i") + ")");
+  if (type == "Sign") return assign("duet::blocks::sign(" + in(0, "i") + ")");
+  if (type == "MinMax") {
+    const std::string function = block.argument("function")->text == "max" ? "maximum" : "minimum";
+    std::string value = in(0, "i");
+    for (std::size_t k = 1; k < block.inputs.size(); ++k) {
+      value = "duet::blocks::" + function + "(" + value + ", " + in(k, "i") + ")";
+    }
+    return assign(value);
+  }
+  if (type == "Step" || type == "PulseGenerator") return source_output(block);
+  if (type == "BytePack" || type == "ByteUnpack") return bytes_output(block);
+  if (type == "Mean") {
+    const std::size_t count = program_.signals[block.inputs[0]].type.elements();
+    return assign("duet::blocks::mean(" + pointer(block.inputs[0]) + ", std::size_t{" + std::to_string(count) + "})");
+  }
+  if (type == "StateFeedback") {
+    const std::size_t nx = program_.signals[block.inputs[0]].type.elements();
+    return "  duet::blocks::state_feedback(" + array_argument(block, "k", t) + ", " + pointer(block.inputs[0]) + ", " +
+           std::to_string(n) + ", " + std::to_string(nx) + ", " + pointer(y) + ");\n";
+  }
+  if (type == "TransferFunction" || type == "StateSpace" || type == "MovingAverage" || type == "KalmanFilter") {
+    return sized_state_output(block);
+  }
   if (type == "Atan2") return assign("duet::blocks::atan2(" + in(0, "i") + ", " + in(1, "i") + ")");
   if (type == "Not") return assign("!duet::blocks::convert<bool>(" + in(0, "i") + ")");
   if (type == "Convert") return assign("duet::blocks::convert<" + type_of(t) + ">(" + in(0, "i") + ")");
@@ -431,6 +477,10 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
     return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
                   period + ")");
   }
+  if (type == "FilteredDerivative") {
+    return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
+                  argument(block, "n", pid_default_filter, t, "i") + ")");
+  }
   if (type == "DiscretePid") {
     return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
                   argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
@@ -463,14 +513,207 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
                            argument(block, "upper", infinity, t, "i") + ");");
   }
   if (type == "DiscreteDerivative") return for_each(n, state(block, "i") + ".update(" + in("i") + ");");
+  if (type == "Step" || type == "PulseGenerator") return "  state." + block.identifier + ".update();\n";
+  if (type == "FilteredDerivative") {
+    return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + argument(block, "gain", 1, t, "i") + ", " +
+                           argument(block, "n", pid_default_filter, t, "i") + ", " + period + ");");
+  }
+  if (type == "TransferFunction" || type == "StateSpace" || type == "MovingAverage" || type == "KalmanFilter") {
+    return sized_state_update(block);
+  }
   if (type == "DiscretePid") {
-    return for_each(n, state(block, "i") + ".update(" + in("i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
+    const std::string update = anti_windup_clamping(block) ? ".update_clamped(" : ".update(";
+    return for_each(n, state(block, "i") + update + in("i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
                            argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
                            argument(block, "n", pid_default_filter, t, "i") + ", " +
                            argument(block, "lower", -infinity, t, "i") + ", " +
                            argument(block, "upper", infinity, t, "i") + "}, " + period + ");");
   }
   return {};
+}
+
+std::string Generator::source_output(const ProgramBlock& block) const {
+  const DataType t = program_.signals[block.outputs[0]].type.type;
+  // A boolean source computes in uint8 (Step and PulseGenerator take numbers) and converts.
+  const DataType value_type = t == DataType::boolean ? DataType::uint8 : t;
+  const SourceSteps steps = source_steps(block);
+  const std::string k = "state." + block.identifier + ".output()";
+  std::string value;
+  if (block.type() == "Step") {
+    value = "duet::blocks::step(" + k + ", " + std::to_string(steps.start) + "U, " +
+            argument(block, "initial", 0, value_type, "0") + ", " + argument(block, "final", 1, value_type, "0") + ")";
+  } else {
+    value = "duet::blocks::pulse(" + k + ", " + std::to_string(steps.period) + "U, " + std::to_string(steps.width) +
+            "U, " + std::to_string(steps.start) + "U, " + argument(block, "amplitude", 1, value_type, "0") + ")";
+  }
+  if (t == DataType::boolean) value = "duet::blocks::convert<bool>(" + value + ")";
+  return "  " + element(block.outputs[0], "0") + " = " + value + ";\n";
+}
+
+std::string Generator::bytes_output(const ProgramBlock& block) const {
+  const std::string endian =
+      std::string{"duet::blocks::Endian::"} + (endian_of(block) == blocks::Endian::big ? "big" : "little");
+  const std::size_t y = block.outputs[0];
+  std::string text;
+  if (block.type() == "BytePack") {
+    std::size_t at = 0;
+    for (const std::size_t signal : block.inputs) {
+      const SignalType& type = program_.signals[signal].type;
+      for (std::size_t i = 0; i < type.elements(); ++i) {
+        text += "  duet::blocks::pack(" + element(signal, i) + ", " + endian + ", &" + element(y, at) + ");\n";
+        at += size_of(type.type);
+      }
+    }
+    return text;
+  }
+  const SignalType& out = program_.signals[y].type;
+  const std::size_t offset = unpack_offset(block);
+  for (std::size_t i = 0; i < out.elements(); ++i) {
+    text += "  " + element(y, i) + " = duet::blocks::unpack<" + type_of(out.type) + ">(&" +
+            element(block.inputs[0], offset + i * size_of(out.type)) + ", " + endian + ");\n";
+  }
+  return text;
+}
+
+std::string Generator::array_argument(const ProgramBlock& block, const std::string& name, DataType type) const {
+  const Argument* given = block.argument(name);
+  if (given->kind == Argument::Kind::parameter) {
+    const Parameter& parameter = program_.parameter(*given);
+    return (parameter.value.elements.size() > 1 ? "p." : "&p.") + parameter.name;
+  }
+  (void)type;  // block_constants() declares it in the block's type
+  return block.identifier + "_" + name;
+}
+
+namespace {
+
+std::size_t rows(const Program& program, const ProgramBlock& block, const char* name) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr) return 1;
+  const std::vector<std::size_t>& shape =
+      argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value.shape : argument->value.shape;
+  return shape.empty() ? 1 : shape[0];
+}
+
+std::size_t columns(const Program& program, const ProgramBlock& block, const char* name) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr) return 1;
+  const std::vector<std::size_t>& shape =
+      argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value.shape : argument->value.shape;
+  return shape.size() == 2 ? shape[1] : 1;
+}
+
+std::size_t elements_of(const Program& program, const ProgramBlock& block, const char* name) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr) return 0;
+  return argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value.elements.size()
+                                                     : argument->value.elements.size();
+}
+
+}  // namespace
+
+std::string Generator::sized_state_type(const ProgramBlock& block) const {
+  if (block.inputs.empty()) return {};  // the sized blocks all have an input
+  const SignalType& out = program_.signals[block.outputs[0]].type;
+  const std::string t = type_of(out.type);
+  const std::string& type = block.type();
+  const std::size_t inputs = program_.signals[block.inputs[0]].type.elements();
+  if (type == "TransferFunction") {
+    return "duet::blocks::DiscreteTransferFunction<" + t + ", " +
+           std::to_string(elements_of(program_, block, "denominator") - 1) + ">";
+  }
+  if (type == "StateSpace") {
+    return "duet::blocks::DiscreteStateSpace<" + t + ", " + std::to_string(rows(program_, block, "a")) + ", " +
+           std::to_string(inputs) + ", " + std::to_string(out.elements()) + ">";
+  }
+  if (type == "MovingAverage") {
+    return "duet::blocks::MovingAverage<" + t + ", " + std::to_string(block_window(block)) + ">";
+  }
+  if (type == "KalmanFilter") {
+    const std::string states = std::to_string(rows(program_, block, "a"));
+    if (block.argument("gain") != nullptr) {
+      return "duet::blocks::SteadyStateKalmanFilter<" + t + ", " + states + ", " + std::to_string(inputs) + ">";
+    }
+    return "duet::blocks::KalmanFilter<" + t + ", " + states + ", " + std::to_string(inputs) + ", " +
+           std::to_string(columns(program_, block, "g")) + ">";
+  }
+  return {};
+}
+
+std::string Generator::sized_state_reset(const ProgramBlock& block) const {
+  const std::string& type = block.type();
+  const DataType t = program_.signals[block.outputs[0]].type.type;
+  const std::string name = "state." + block.identifier;
+  std::string text = "  " + name + " = {};\n";
+  const auto fill = [&](const std::string& member, std::size_t count, const char* parameter, double fallback) {
+    const bool given = block.argument(parameter) != nullptr;
+    const bool scalar = given && elements_of(program_, block, parameter) == 1;
+    for (std::size_t i = 0; i < count; ++i) {
+      text += "  " + name + "." + member + "[" + std::to_string(i) +
+              "] = " + argument(block, parameter, fallback, t, scalar || !given ? "0" : std::to_string(i)) + ";\n";
+    }
+  };
+  if (type == "StateSpace" || type == "KalmanFilter") fill("x", rows(program_, block, "a"), "initial", 0);
+  if (type == "MovingAverage") fill("window", block_window(block), "initial", 0);
+  if (type == "KalmanFilter" && block.argument("gain") == nullptr) {
+    const std::size_t states = rows(program_, block, "a");
+    if (block.argument("covariance") != nullptr) {
+      fill("p", states * states, "covariance", 0);
+    } else {  // the identity
+      for (std::size_t i = 0; i < states; ++i) {
+        text += "  " + name + ".p[" + std::to_string(i * states + i) + "] = " + literal(t, 1) + ";\n";
+      }
+    }
+  }
+  return text;
+}
+
+std::string Generator::sized_state_output(const ProgramBlock& block) const {
+  const std::string& type = block.type();
+  const DataType t = program_.signals[block.outputs[0]].type.type;
+  const std::size_t y = block.outputs[0];
+  const std::string name = "state." + block.identifier;
+  const std::string u = pointer(block.inputs[0]);
+  if (type == "TransferFunction") {
+    return "  " + element(y, "0") + " = " + name + ".output(" + element(block.inputs[0], "0") + ", " +
+           array_argument(block, "numerator", t) + ", " + array_argument(block, "denominator", t) + ");\n";
+  }
+  if (type == "StateSpace") {
+    return "  " + name + ".output(" + u + ", " + array_argument(block, "c", t) + ", " + array_argument(block, "d", t) +
+           ", " + pointer(y) + ");\n";
+  }
+  if (type == "MovingAverage") {
+    return "  " + element(y, "0") + " = " + name + ".output(" + element(block.inputs[0], "0") + ");\n";
+  }
+  if (block.argument("gain") != nullptr) {
+    return "  " + name + ".output(" + u + ", " + array_argument(block, "c", t) + ", " +
+           array_argument(block, "gain", t) + ", " + pointer(y) + ");\n";
+  }
+  return "  " + name + ".output(" + u + ", " + array_argument(block, "c", t) + ", " + array_argument(block, "r", t) +
+         ", " + pointer(y) + ");\n";
+}
+
+std::string Generator::sized_state_update(const ProgramBlock& block) const {
+  const std::string& type = block.type();
+  const DataType t = program_.signals[block.outputs[0]].type.type;
+  const std::string name = "state." + block.identifier;
+  const std::string u = pointer(block.inputs[0]);
+  if (type == "TransferFunction") {
+    return "  " + name + ".update(" + element(block.inputs[0], "0") + ", " + array_argument(block, "numerator", t) +
+           ", " + array_argument(block, "denominator", t) + ");\n";
+  }
+  if (type == "StateSpace") {
+    return "  " + name + ".update(" + u + ", " + array_argument(block, "a", t) + ", " + array_argument(block, "b", t) +
+           ");\n";
+  }
+  if (type == "MovingAverage") return "  " + name + ".update(" + element(block.inputs[0], "0") + ");\n";
+  if (block.argument("gain") != nullptr) {
+    return "  " + name + ".update(" + u + ", " + array_argument(block, "a", t) + ", " + array_argument(block, "c", t) +
+           ", " + array_argument(block, "gain", t) + ");\n";
+  }
+  return "  " + name + ".update(" + u + ", " + array_argument(block, "a", t) + ", " + array_argument(block, "c", t) +
+         ", " + array_argument(block, "g", t) + ", " + array_argument(block, "q", t) + ", " +
+         array_argument(block, "r", t) + ");\n";
 }
 
 // A Code block: its inputs and parameters copied into its structures, the function called with them and its state,
@@ -517,6 +760,10 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
     return "  " + element(block.outputs[0], "0") + " = duet::hardware::gpio_read(" + block.identifier + "_pin);\n";
   }
   const std::string resource = "\"" + hardware_resource(block) + "\"";
+  if (type == "AdcStart") {  // starts a conversion of `count` samples
+    return "  {\n    const double count[] = {" + shortest(block.argument("count")->value.elements.at(0)) +
+           "};\n    duet::hardware::write(" + resource + ", count);\n  }\n";
+  }
   std::string text = "  {\n";
   if (!block.inputs.empty()) {
     std::string values;

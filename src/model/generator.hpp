@@ -71,6 +71,15 @@ class Generator {
   [[nodiscard]] std::string release_flag(const ProgramBlock& block, std::string& statements) const;
   [[nodiscard]] static std::string shared_countdown(std::size_t task, std::uint32_t ratio);
   [[nodiscard]] std::vector<std::pair<std::size_t, std::uint32_t>> shared_countdowns() const;  // (task, ratio)
+  [[nodiscard]] std::string source_output(const ProgramBlock& block) const;
+  [[nodiscard]] std::string bytes_output(const ProgramBlock& block) const;
+  // A block parameter as a `const T*`: a tunable parameter's array, or the block's constant array of the literal.
+  [[nodiscard]] std::string array_argument(const ProgramBlock& block, const std::string& name, DataType type) const;
+  // Blocks whose state's size is a template argument: TransferFunction, StateSpace, MovingAverage, KalmanFilter.
+  [[nodiscard]] std::string sized_state_type(const ProgramBlock& block) const;
+  [[nodiscard]] std::string sized_state_reset(const ProgramBlock& block) const;
+  [[nodiscard]] std::string sized_state_output(const ProgramBlock& block) const;
+  [[nodiscard]] std::string sized_state_update(const ProgramBlock& block) const;
   [[nodiscard]] std::string rate_transition_output(const ProgramBlock& block) const;
   [[nodiscard]] std::string rate_transition_update(const ProgramBlock& block) const;
 

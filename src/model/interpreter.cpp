@@ -1,17 +1,25 @@
 #include "duet/model/interpreter.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <deque>
 #include <limits>
 
 #include "block_semantics.hpp"
 #include "duet/blocks/arithmetic.hpp"
+#include "duet/blocks/average.hpp"
+#include "duet/blocks/bytes.hpp"
 #include "duet/blocks/convert.hpp"
+#include "duet/blocks/kalman.hpp"
 #include "duet/blocks/logic.hpp"
 #include "duet/blocks/matrix.hpp"
 #include "duet/blocks/nonlinear.hpp"
+#include "duet/blocks/sources.hpp"
 #include "duet/blocks/state.hpp"
+#include "duet/blocks/state_space.hpp"
 #include "duet/blocks/table.hpp"
+#include "duet/blocks/transfer_function.hpp"
 #include "duet/blocks/trigonometry.hpp"
 #include "duet/model/data_type.hpp"
 #include "typed.hpp"
@@ -158,13 +166,16 @@ Compiled arithmetic(Compiler& c, const ProgramBlock& block) {
     if (type == "Sum" || type == "Product") {
       std::vector<Operand<T>> inputs;
       for (std::size_t k = 0; k < block.inputs.size(); ++k) inputs.push_back(c.input<T>(block, k));
-      const std::string signs = sum_signs(block);
       const bool sum = type == "Sum";
+      const std::string signs = sum ? sum_signs(block) : product_signs(block);
       return {elementwise<T>(c, block,
                              [inputs, signs, sum](std::size_t i) {
                                if (!sum) {
-                                 T y = inputs[0][i];
-                                 for (std::size_t k = 1; k < inputs.size(); ++k) y = blocks::multiply(y, inputs[k][i]);
+                                 T y = signs[0] == '/' ? blocks::divide(T{1}, inputs[0][i]) : inputs[0][i];
+                                 for (std::size_t k = 1; k < inputs.size(); ++k) {
+                                   y = signs[k] == '/' ? blocks::divide(y, inputs[k][i])
+                                                       : blocks::multiply(y, inputs[k][i]);
+                                 }
                                  return y;
                                }
                                T y = signs[0] == '-' ? blocks::negate(inputs[0][i]) : inputs[0][i];
@@ -186,6 +197,24 @@ Compiled arithmetic(Compiler& c, const ProgramBlock& block) {
     if (type == "Abs") {
       const Operand<T> u = c.input<T>(block, 0);
       return {elementwise<T>(c, block, [u](std::size_t i) { return blocks::absolute(u[i]); }), {}};
+    }
+    if (type == "Sign") {
+      const Operand<T> u = c.input<T>(block, 0);
+      return {elementwise<T>(c, block, [u](std::size_t i) { return blocks::sign(u[i]); }), {}};
+    }
+    if (type == "MinMax") {
+      std::vector<Operand<T>> inputs;
+      for (std::size_t k = 0; k < block.inputs.size(); ++k) inputs.push_back(c.input<T>(block, k));
+      const bool maximum = block.argument("function")->text == "max";
+      return {elementwise<T>(c, block,
+                             [inputs, maximum](std::size_t i) {
+                               T y = inputs[0][i];
+                               for (std::size_t k = 1; k < inputs.size(); ++k) {
+                                 y = maximum ? blocks::maximum(y, inputs[k][i]) : blocks::minimum(y, inputs[k][i]);
+                               }
+                               return y;
+                             }),
+              {}};
     }
     if (type == "MatrixMultiply") {
       const Operand<T> a = c.input<T>(block, 0);
@@ -209,6 +238,113 @@ Compiled arithmetic(Compiler& c, const ProgramBlock& block) {
     if constexpr (blocks::Floating<T>) return floating<T>(c, block);
     return {};
   }
+}
+
+// The blocks whose generated state has its size as a template argument run here on the block library's kernels with
+// sizes known at run time (the generated structures call the same kernels, so both compute alike).
+template <typename T>
+Compiled sized(Compiler& c, const ProgramBlock& block) {
+  const std::string& type = block.type();
+  T* y = c.output<T>(block, 0);
+  const std::size_t n_in = c.elements_in(block);
+  const std::size_t n_out = c.elements_out(block);
+  const Operand<T> u = c.input<T>(block, 0);
+  const auto matrix = [&](const char* name) { return c.argument<T>(block, name, 0); };
+  const auto count = [&](const char* name) {
+    const Argument* argument = block.argument(name);
+    if (argument == nullptr) return std::size_t{0};
+    return argument->kind == Argument::Kind::parameter ? c.program().parameter(*argument).value.elements.size()
+                                                       : argument->value.elements.size();
+  };
+  const auto data = [](const Operand<T>& operand) { return operand.all(0).data(); };
+  static constexpr const T* no_input = nullptr;  // the filters' B u term: the blocks have no input u
+  if (type == "TransferFunction") {
+    const std::size_t order = count("denominator") - 1;
+    auto state = std::make_shared<std::vector<T>>(order);
+    const Operand<T> numerator = matrix("numerator");
+    const Operand<T> denominator = matrix("denominator");
+    return {{[state, y, u, numerator, denominator, data] {
+               *y = blocks::detail::transfer_function_output(state->data(), state->size(), u[0], data(numerator),
+                                                             data(denominator));
+             },
+             [state, u, numerator, denominator, data] {
+               blocks::detail::transfer_function_update(state->data(), state->size(), u[0], data(numerator),
+                                                        data(denominator));
+             }},
+            [state] { std::fill(state->begin(), state->end(), T{0}); }};
+  }
+  const Operand<T> initial = c.argument<T>(block, "initial", 0);
+  if (type == "MovingAverage") {
+    const std::size_t window = block_window(block);
+    auto state = std::make_shared<std::pair<std::vector<T>, std::uint32_t>>(std::vector<T>(window), 0U);
+    return {{[state, y, u] {
+               *y =
+                   blocks::detail::moving_average_output(state->first.data(), state->second, state->first.size(), u[0]);
+             },
+             [state, u] {
+               blocks::detail::moving_average_update(state->first.data(), state->second, state->first.size(), u[0]);
+             }},
+            [state, initial] {
+              for (std::size_t i = 0; i < state->first.size(); ++i) state->first[i] = initial[i];
+              state->second = 0;
+            }};
+  }
+  const std::size_t nx = static_cast<std::size_t>(std::sqrt(static_cast<double>(count("a"))));
+  auto x = std::make_shared<std::vector<T>>(nx);
+  const Operand<T> a = matrix("a");
+  const Operand<T> cm = matrix("c");
+  const Reset reset_x = [x, initial] {
+    for (std::size_t i = 0; i < x->size(); ++i) (*x)[i] = initial[i];
+  };
+  if (type == "StateSpace") {
+    const Operand<T> b = matrix("b");
+    const Operand<T> d = matrix("d");
+    auto scratch = std::make_shared<std::vector<T>>(nx);
+    return {{[x, y, u, cm, d, n_in, n_out, data] {
+               blocks::detail::state_space_output(x->data(), x->size(), n_in, n_out, data(u), data(cm), data(d), y);
+             },
+             [x, u, a, b, n_in, scratch, data] {
+               blocks::detail::state_space_update(x->data(), x->size(), n_in, data(u), data(a), data(b),
+                                                  scratch->data());
+             }},
+            reset_x};
+  }
+  // KalmanFilter: steady state with a gain, or time-varying with its covariance.
+  if (block.argument("gain") != nullptr) {
+    const Operand<T> gain = matrix("gain");
+    auto scratch = std::make_shared<std::vector<T>>(blocks::detail::kalman_scratch_size(nx, n_in, 1));
+    return {{[x, y, u, cm, gain, n_in, scratch, data] {
+               blocks::detail::steady_state_kalman_output(x->data(), x->size(), n_in, data(u), data(cm), data(gain), y,
+                                                          scratch->data());
+             },
+             [x, u, a, cm, gain, n_in, scratch, data] {
+               blocks::detail::steady_state_kalman_update(x->data(), x->size(), n_in, data(u), no_input, 0, data(a),
+                                                          no_input, data(cm), data(gain), scratch->data());
+             }},
+            reset_x};
+  }
+  const std::size_t nw = count("q") == 0 ? 1 : static_cast<std::size_t>(std::sqrt(static_cast<double>(count("q"))));
+  auto p = std::make_shared<std::vector<T>>(nx * nx);
+  const Operand<T> g = matrix("g");
+  const Operand<T> q = matrix("q");
+  const Operand<T> r = matrix("r");
+  const bool covariance_given = block.argument("covariance") != nullptr;
+  const Operand<T> covariance = c.argument<T>(block, "covariance", 0);
+  auto scratch = std::make_shared<std::vector<T>>(blocks::detail::kalman_scratch_size(nx, n_in, nw));
+  return {{[x, p, y, u, cm, r, n_in, scratch, data] {
+             blocks::detail::kalman_output(x->data(), p->data(), x->size(), n_in, data(u), data(cm), data(r), y,
+                                           scratch->data());
+           },
+           [x, p, u, a, cm, g, q, r, n_in, nw, scratch, data] {
+             blocks::detail::kalman_update(x->data(), p->data(), x->size(), n_in, nw, data(u), no_input, 0, data(a),
+                                           no_input, data(cm), data(g), data(q), data(r), scratch->data());
+           }},
+          [reset_x, p, nx, covariance_given, covariance] {
+            reset_x();
+            for (std::size_t i = 0; i < nx * nx; ++i) {
+              (*p)[i] = covariance_given ? covariance[i] : (i % (nx + 1) == 0 ? T{1} : T{0});
+            }
+          }};
 }
 
 template <typename T>
@@ -253,8 +389,39 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
               for (auto& state : *states) state.previous = T{0};
             }};
   }
+  if (type == "TransferFunction" || type == "StateSpace" || type == "MovingAverage" || type == "KalmanFilter") {
+    return sized<T>(c, block);
+  }
+  if (type == "Mean") {
+    const std::size_t count = c.elements_in(block);
+    return {{[y, u, count] { *y = blocks::mean(u.all(count).data(), count); }, {}}, {}};
+  }
+  if (type == "StateFeedback") {
+    const std::size_t nx = c.elements_in(block);
+    const Operand<T> k = c.argument<T>(block, "k", 0);
+    return {{[y, u, k, n, nx] { blocks::state_feedback(k.all(n * nx).data(), u.all(nx).data(), n, nx, y); }, {}}, {}};
+  }
+  if (type == "FilteredDerivative") {
+    auto states = std::make_shared<std::vector<blocks::FilteredDerivative<T>>>(n);
+    const Operand<T> gain = c.argument<T>(block, "gain", 1);
+    const Operand<T> coefficient = c.argument<T>(block, "n", pid_default_filter);
+    return {{[states, y, u, gain, coefficient] {
+               for (std::size_t i = 0; i < states->size(); ++i) {
+                 y[i] = (*states)[i].output(u[i], gain[i], coefficient[i]);
+               }
+             },
+             [states, u, gain, coefficient, period] {
+               for (std::size_t i = 0; i < states->size(); ++i) {
+                 (*states)[i].update(u[i], gain[i], coefficient[i], period);
+               }
+             }},
+            [states] {
+              for (auto& state : *states) state.filter = T{0};
+            }};
+  }
   if (type == "DiscretePid") {
     auto states = std::make_shared<std::vector<blocks::DiscretePid<T>>>(n);
+    const bool clamping = anti_windup_clamping(block);
     const std::array<Operand<T>, 6> gains{c.argument<T>(block, "p", 0),
                                           c.argument<T>(block, "i", 0),
                                           c.argument<T>(block, "d", 0),
@@ -267,8 +434,14 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
     return {{[states, y, u, gains_of] {
                for (std::size_t i = 0; i < states->size(); ++i) y[i] = (*states)[i].output(u[i], gains_of(i));
              },
-             [states, u, gains_of, period] {
-               for (std::size_t i = 0; i < states->size(); ++i) (*states)[i].update(u[i], gains_of(i), period);
+             [states, u, gains_of, period, clamping] {
+               for (std::size_t i = 0; i < states->size(); ++i) {
+                 if (clamping) {
+                   (*states)[i].update_clamped(u[i], gains_of(i), period);
+                 } else {
+                   (*states)[i].update(u[i], gains_of(i), period);
+                 }
+               }
              }},
             [states] {
               for (auto& state : *states) state = {T{0}, T{0}};
@@ -277,10 +450,78 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
   return {};
 }
 
+// Step and PulseGenerator count their own steps; a boolean one computes in uint8 and converts.
+template <typename T>
+Compiled source(Compiler& c, const ProgramBlock& block) {
+  using Value = std::conditional_t<std::is_same_v<T, bool>, std::uint8_t, T>;
+  auto counter = std::make_shared<blocks::StepCounter>();
+  T* y = c.output<T>(block, 0);
+  const SourceSteps steps = source_steps(block);
+  std::function<void()> output;
+  if (block.type() == "Step") {
+    const Operand<Value> initial = c.argument<Value>(block, "initial", 0);
+    const Operand<Value> final_value = c.argument<Value>(block, "final", 1);
+    output = [counter, y, steps, initial, final_value] {
+      *y = blocks::convert<T>(blocks::step(counter->output(), steps.start, initial[0], final_value[0]));
+    };
+  } else {
+    const Operand<Value> amplitude = c.argument<Value>(block, "amplitude", 1);
+    output = [counter, y, steps, amplitude] {
+      *y = blocks::convert<T>(blocks::pulse(counter->output(), steps.period, steps.width, steps.start, amplitude[0]));
+    };
+  }
+  return {{output, [counter] { counter->update(); }}, [counter] { counter->k = 0; }};
+}
+
+// BytePack: each input's elements in order, each as its type's bytes; ByteUnpack: values from bytes at an offset.
+Compiled bytes(Compiler& c, const ProgramBlock& block) {
+  const blocks::Endian endian = endian_of(block);
+  if (block.type() == "BytePack") {
+    std::vector<std::function<void(std::uint8_t*)>> packs;
+    for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+      packs.push_back(with_type(c.type_in(block, k), [&](auto tag) -> std::function<void(std::uint8_t*)> {
+        using T = decltype(tag);
+        const Operand<T> u = c.input<T>(block, k);
+        const std::size_t n = c.elements_in(block, k);
+        return [u, n, endian](std::uint8_t* at) {
+          for (std::size_t i = 0; i < n; ++i) blocks::pack(u[i], endian, at + i * sizeof(T));
+        };
+      }));
+    }
+    std::vector<std::size_t> offsets;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < block.inputs.size(); ++k) {
+      offsets.push_back(at);
+      at += size_of(c.type_in(block, k)) * c.elements_in(block, k);
+    }
+    std::uint8_t* y = c.output<std::uint8_t>(block, 0);
+    return {{[packs, offsets, y] {
+               for (std::size_t k = 0; k < packs.size(); ++k) packs[k](y + offsets[k]);
+             },
+             {}},
+            {}};
+  }
+  const Operand<std::uint8_t> u = c.input<std::uint8_t>(block, 0);
+  const std::size_t offset = unpack_offset(block);
+  return with_type(c.type_out(block), [&](auto tag) -> Compiled {
+    using T = decltype(tag);
+    T* y = c.output<T>(block, 0);
+    const std::size_t n = c.elements_out(block);
+    const std::size_t in = c.elements_in(block);
+    return {{[u, y, n, in, offset, endian] {
+               const std::uint8_t* bytes = u.all(in).data() + offset;
+               for (std::size_t i = 0; i < n; ++i) y[i] = blocks::unpack<T>(bytes + i * sizeof(T), endian);
+             },
+             {}},
+            {}};
+  });
+}
+
 // Blocks that compute in any element type, booleans too.
 template <typename T>
 Compiled any_type(Compiler& c, const ProgramBlock& block) {
   const std::string& type = block.type();
+  if (type == "Step" || type == "PulseGenerator") return source<T>(c, block);
   if (type == "Constant") {
     if (c.program().signals[block.outputs[0]].parameter) return {};  // the parameter itself: nothing to compute
     const Operand<T> value = c.argument<T>(block, "value", 0);
@@ -476,6 +717,10 @@ Compiled rate_transition(Compiler& c, const ProgramBlock& block) {
 Compiled hardware(Compiler& c, const ProgramBlock& block) {
   const std::string resource = hardware_resource(block);
   plant::Plant* plant = &c.plant();
+  if (block.type() == "AdcStart") {  // starts a conversion of `count` samples
+    const double count = block.argument("count")->value.elements.at(0);
+    return {{[plant, resource, count] { plant->write(resource, {&count, 1}); }, {}}, {}};
+  }
   // What the block writes (its inputs, element by element) and then reads back (its outputs): an SpiDma does both.
   std::vector<std::function<double(std::size_t)>> inputs;
   std::vector<std::size_t> input_counts;
@@ -601,6 +846,7 @@ Compiled compile(Compiler& c, const ProgramBlock& block, const UserCodeLibrary* 
   if (type == "Outport") return {};
   if (type == "RateTransition") return rate_transition(c, block);
   if (type == "Logic") return logic(c, block);
+  if (type == "BytePack" || type == "ByteUnpack") return bytes(c, block);
   if (!hardware_resource(block).empty()) return hardware(c, block);
   if (type == "Not" || type == "Compare" || type == "Convert" || type == "EdgeDetect") {
     return with_type(c.type_in(block), [&](auto tag) { return by_input_type<decltype(tag)>(c, block); });
@@ -638,9 +884,9 @@ std::string hardware_resource(const ProgramBlock& block) {
   if (type == "GpioIn" || type == "GpioOut") return "gpio:" + text("pin");
   if (type == "PwmOut") return "pwm:" + text("timer") + "/" + text("channel");
   if (type == "InputCapture") return "capture:" + text("timer") + "/" + text("channel");
-  if (type == "SpiDma") return "spi:" + text("spi");
+  if (type == "SpiDma" || type == "SpiReceive") return "spi:" + text("spi");
   if (type == "Exti") return "exti:" + text("line");
-  if (type == "AdcDma") return "adc:" + text("adc") + "/" + text("channel");
+  if (type == "AdcDma" || type == "AdcStart") return "adc:" + text("adc") + "/" + text("channel");
   if (type == "IpcSend" || type == "IpcReceive") return "ipc:" + text("channel");
   if (type == "PlantInput" || type == "PlantOutput") return text("resource");
   return {};

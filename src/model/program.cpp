@@ -360,6 +360,8 @@ class ProgramBuilder {
     for (const std::string& path : constants) {
       program_.blocks[block_of.at(path)].task = at_initialisation;
       program_.blocks[block_of.at(path)].update_task = at_initialisation;
+      // Computed once, before anything runs: a constant in an enabled or triggered subsystem is that constant.
+      program_.blocks[block_of.at(path)].enables.clear();
       program_.initial_outputs.push_back(block_of.at(path));
     }
     // A RateTransition takes its value in the task of what drives it.

@@ -157,7 +157,10 @@ RateAnalysis analyse_rates(const Model& model) {
       continue;
     }
     std::vector<Input> sources = node.inputs;
-    for (const std::string& enable : node.enables) sources.push_back({enable, node.block->location});
+    // A constant is computed once, before anything runs: what would enable it does not matter.
+    if (node.rate.kind != Rate::Kind::constant) {
+      for (const std::string& enable : node.enables) sources.push_back({enable, node.block->location});
+    }
     for (const Input& input : sources) {
       const auto driver = driver_of.find(input.signal);
       if (driver == driver_of.end()) continue;  // undriven: validation says so

@@ -38,6 +38,15 @@ std::size_t size_argument(const ProgramBlock& block, const char* name) {
   return static_cast<std::size_t>(std::max(1.0, argument->value.elements.front()));
 }
 
+// A whole-number parameter as written (offsets, counts); `fallback` when it is not given.
+std::size_t number_argument(const ProgramBlock& block, const char* name, std::size_t fallback) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr || argument->value.elements.empty() || !(argument->value.elements.front() >= 0)) {
+    return fallback;
+  }
+  return static_cast<std::size_t>(argument->value.elements.front());
+}
+
 // The shape of `count` elements: one is a scalar.
 std::vector<std::size_t> sized(std::size_t count) {
   return count > 1 ? std::vector<std::size_t>{count} : std::vector<std::size_t>{};
@@ -51,6 +60,16 @@ SignalType argument_type(const Program& program, const Argument& argument, DataT
   }
   return {fallback, argument.value.shape};
 }
+
+// The shape of what a block parameter gives: a literal's as written, a tunable parameter's declared.
+std::vector<std::size_t> argument_shape(const Program& program, const ProgramBlock& block, const char* name) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr) return {};
+  if (argument->kind == Argument::Kind::parameter) return program.parameter(*argument).value.shape;
+  return argument->value.shape;
+}
+
+std::size_t rows_of(const std::vector<std::size_t>& shape) { return shape.empty() ? 1 : shape[0]; }
 
 std::vector<std::size_t> product_shape(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
   const std::size_t rows = a.empty() ? 1 : a[0];
@@ -111,6 +130,24 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
     if (inputs[0] && inputs[1]) y = SignalType{inputs[0]->type, product_shape(inputs[0]->shape, inputs[1]->shape)};
   } else if (type == "Counter") {
     y = SignalType{word_type(block).value_or(DataType::uint32), {}};
+  } else if (type == "Step" || type == "PulseGenerator") {
+    y = SignalType{word_type(block).value_or(DataType::float64), {}};
+  } else if (type == "BytePack") {
+    if (std::all_of(inputs.begin(), inputs.end(), [](const auto& input) { return input.has_value(); })) {
+      std::size_t bytes = 0;
+      for (const auto& input : inputs) bytes += size_of(input->type) * input->elements();
+      y = SignalType{DataType::uint8, sized(bytes)};
+    }
+  } else if (type == "ByteUnpack") {
+    if (word_type(block)) y = SignalType{*word_type(block), sized(size_argument(block, "count"))};
+  } else if (type == "Mean") {
+    if (inputs[0]) y = SignalType{inputs[0]->type, {}};
+  } else if (type == "StateSpace" || type == "StateFeedback" || type == "KalmanFilter") {
+    // Outputs as many as the rows of C (StateSpace), of K (StateFeedback) or of A (KalmanFilter: the states).
+    const char* rows = type == "StateSpace" ? "c" : type == "StateFeedback" ? "k" : "a";
+    if (inputs[0]) y = SignalType{inputs[0]->type, sized(rows_of(argument_shape(program, block, rows)))};
+  } else if (type == "SpiReceive") {
+    y = SignalType{DataType::uint8, sized(size_argument(block, "size"))};
   } else if (type == "GpioIn") {
     y = SignalType{DataType::boolean, {}};
   } else if (type == "Exti") {
@@ -188,7 +225,8 @@ class BlockCheck {
   // Parameters that are words: a data type, an operator, a mode, signs.
   void words() {
     const Argument* type = block_.argument("type");
-    if (type != nullptr && is({"Constant", "Convert", "Counter"}) && !word_type(block_)) {
+    if (type != nullptr && is({"Constant", "Convert", "Counter", "ByteUnpack", "Step", "PulseGenerator"}) &&
+        !word_type(block_)) {
       constexpr std::string_view types[] = {"double", "single", "int8",   "int16",  "int32",
                                             "uint8",  "uint16", "uint32", "boolean"};
       const auto closest = closest_word(type->text, types);
@@ -213,7 +251,32 @@ class BlockCheck {
       error(mode->location, name_ + " has no mode '" + mode->text + "'",
             "its modes: deterministic, between periodic rates, and latest, with an interrupt task");
     }
+    choice("function", {"min", "max"});
+    choice("endian", {"little", "big"});
+    choice("anti_windup", {"none", "clamping"});
     const Argument* signs = block_.argument("signs");
+    if (signs != nullptr && block_.type() == "Product") {
+      if (signs->text.find_first_not_of("*/") != std::string::npos || signs->text.size() != block_.inputs.size()) {
+        error(signs->location, "signs '" + signs->text + "' of " + name_ + " are not one * or / per input",
+              "u1 first: '*/' is u1 / u2");
+      }
+    }
+    for (const char* fixed : {"time_s", "period_s", "width_s", "delay_s", "window", "offset", "count"}) {
+      const Argument* argument = block_.argument(fixed);
+      if (argument == nullptr) continue;
+      if (argument->kind == Argument::Kind::parameter) {
+        error(argument->location,
+              "parameter '" + std::string{fixed} + "' of " + name_ + " names the tunable parameter '" + argument->text +
+                  "', but it sizes the generated code",
+              "give a number, or a constant (constants: in the model)");
+      } else if (argument->value.elements.size() != 1 ||
+                 !(argument->value.elements[0] >= (std::string_view{fixed} == "window" ? 1 : 0))) {
+        error(argument->location,
+              "parameter '" + std::string{fixed} + "' of " + name_ + " must be one number, " +
+                  (std::string_view{fixed} == "window" ? "1" : "0") + " or more",
+              "for example " + std::string{fixed} + ": 1");
+      }
+    }
     if (signs != nullptr && block_.type() == "Sum") {
       std::string given = signs->text;
       given.erase(std::remove(given.begin(), given.end(), '|'), given.end());
@@ -227,6 +290,15 @@ class BlockCheck {
               "one + or - per input, u1 first");
       }
     }
+  }
+
+  // A word parameter that takes one of a few words.
+  void choice(const char* parameter, std::initializer_list<std::string_view> words) {
+    const Argument* given = block_.argument(parameter);
+    if (given == nullptr || std::find(words.begin(), words.end(), given->text) != words.end()) return;
+    std::string list;
+    for (const std::string_view word : words) list += (list.empty() ? "" : " or ") + std::string{word};
+    error(given->location, name_ + " has no " + parameter + " '" + given->text + "'", "give " + list);
   }
 
   // Inputs that must agree with each other in type, and in size where `shapes`.
@@ -265,7 +337,8 @@ class BlockCheck {
       }
       return;
     }
-    if (is({"DiscreteIntegrator", "DiscreteDerivative", "DiscretePid", "Atan2", "PwmOut"}) &&
+    if (is({"DiscreteIntegrator", "DiscreteDerivative", "DiscretePid", "Atan2", "PwmOut", "FilteredDerivative",
+            "TransferFunction", "StateSpace", "Mean", "MovingAverage", "KalmanFilter", "StateFeedback"}) &&
         !is_floating(input_type(0).type)) {
       error(
           input_location(0),
@@ -273,13 +346,20 @@ class BlockCheck {
           "convert it to single or double with a Convert block");
       return;
     }
-    if (is({"Abs", "Gain", "Sum", "Product", "Saturation", "MatrixMultiply"}) &&
+    if (is({"Abs", "Gain", "Sum", "Product", "Saturation", "MatrixMultiply", "Sign", "MinMax"}) &&
         input_type(0).type == DataType::boolean) {
       error(input_location(0), "type mismatch: " + name_ + " does arithmetic, but " + input(0) + " is boolean",
             "convert it to a number with a Convert block");
       return;
     }
-    if (is({"Sum", "Product", "Atan2"})) same(all, true, true);
+    if (is({"Sum", "Product", "Atan2", "MinMax"})) same(all, true, true);
+    if (block_.type() == "ByteUnpack") unpacked_bytes();
+    if (is({"TransferFunction", "MovingAverage"}) && !input_type(0).shape.empty()) {
+      error(input_location(0),
+            "size mismatch: " + name_ + " filters one signal, but " + input(0) + " is " + describe(input_type(0)),
+            "give it a scalar (a Demux picks elements)");
+    }
+    if (is({"StateSpace", "KalmanFilter", "StateFeedback", "TransferFunction"})) matrices();
     if (is({"Mux", "MatrixMultiply"})) same(all, true, false);
     if (block_.type() == "Logic") same(all, false, true);
     if (block_.type() == "Switch") {
@@ -327,6 +407,104 @@ class BlockCheck {
         break;
       }
     }
+  }
+
+  // A ByteUnpack reads bytes that are there.
+  void unpacked_bytes() {
+    if (input_type(0).type != DataType::uint8) {
+      error(input_location(0),
+            "type mismatch: " + name_ + " reads bytes, but " + input(0) + " is " + describe(input_type(0)),
+            "give it uint8 elements (an SpiDma's, an IpcReceive's)");
+      return;
+    }
+    const auto type = word_type(block_);
+    if (!type) return;
+    const std::size_t offset = number_argument(block_, "offset", 0);
+    const std::size_t count = size_argument(block_, "count");
+    const std::size_t needed = offset + count * size_of(*type);
+    if (needed > input_type(0).elements()) {
+      error(block_.block->location,
+            name_ + " reads bytes " + std::to_string(offset) + " to " + std::to_string(needed - 1) + " of " + input(0) +
+                ", which has " + std::to_string(input_type(0).elements()),
+            "check offset, count and type");
+    }
+  }
+
+  // The matrices of StateSpace, KalmanFilter and StateFeedback, and a TransferFunction's coefficients, agree.
+  void matrices() {
+    const auto shape = [this](const char* name) { return argument_shape(program_, block_, name); };
+    const auto has = [this](const char* name) { return block_.argument(name) != nullptr; };
+    const auto expect = [&](const char* name, std::size_t rows, std::size_t columns) {
+      if (!has(name)) return;
+      const std::vector<std::size_t> given = shape(name);
+      const std::size_t given_rows = given.empty() ? 1 : given[0];
+      const std::size_t given_columns = given.size() == 2 ? given[1] : 1;
+      if (given_rows == rows && given_columns == columns) return;
+      error(block_.argument(name)->location,
+            "size mismatch: parameter '" + std::string{name} + "' of " + name_ + " is " + std::to_string(given_rows) +
+                "x" + std::to_string(given_columns) + ", but it must be " + std::to_string(rows) + "x" +
+                std::to_string(columns),
+            "matrices are lists of rows; a vector input is a column");
+    };
+    const std::size_t inputs = input_type(0).elements();
+    if (block_.type() == "TransferFunction") {
+      const std::size_t numerator = elements(shape("numerator"));
+      const std::size_t denominator = elements(shape("denominator"));
+      if (denominator < 2 || numerator != denominator) {
+        error(block_.argument("denominator")->location,
+              name_ + " has " + std::to_string(numerator) + " numerator and " + std::to_string(denominator) +
+                  " denominator coefficients",
+              "give N+1 of each (order N >= 1, highest power of z first; pad the numerator with leading zeros)");
+      }
+      const Argument* a0 = block_.argument("denominator");
+      if (a0->kind == Argument::Kind::literal && !a0->value.elements.empty() && a0->value.elements[0] == 0) {
+        error(a0->location, "the denominator of " + name_ + " starts with 0", "its first coefficient must not be 0");
+      }
+      return;
+    }
+    if (block_.type() == "StateFeedback") {
+      expect("k", rows_of(shape("k")), inputs);
+      return;
+    }
+    const std::size_t states = rows_of(shape("a"));
+    expect("a", states, states);
+    if (block_.type() == "StateSpace") {
+      expect("b", states, inputs);
+      const std::size_t outputs = rows_of(shape("c"));
+      expect("c", outputs, states);
+      expect("d", outputs, inputs);
+      expect("initial", states, 1);
+      return;
+    }
+    expect("c", inputs, states);
+    expect("initial", states, 1);
+    expect("covariance", states, states);
+    if (has("gain")) {
+      expect("gain", states, inputs);
+      for (const char* unused : {"g", "q", "r"}) {
+        if (has(unused)) {
+          error(block_.argument(unused)->location,
+                name_ + " is given a steady-state gain and '" + std::string{unused} + "'",
+                "give either gain (steady state) or g, q and r (time-varying)");
+        }
+      }
+      return;
+    }
+    if (!has("g") || !has("q") || !has("r")) {
+      error(block_.block->location, name_ + " needs g, q and r (time-varying) or gain (steady state)",
+            "the thesis' filter: a, c, g, q, r; duet design kalman computes a steady-state gain");
+      return;
+    }
+    const std::size_t noises = shape("g").size() == 2 ? shape("g")[1] : 1;
+    expect("g", states, noises);
+    expect("q", noises, noises);
+    expect("r", inputs, inputs);
+  }
+
+  static std::size_t elements(const std::vector<std::size_t>& shape) {
+    std::size_t count = 1;
+    for (const std::size_t extent : shape) count *= extent;
+    return count;
   }
 
   // A Code block's ports are declared: the signals must be what the function takes.
@@ -385,8 +563,11 @@ class BlockCheck {
   // A tunable parameter must be of the block's type and either a scalar or of the signal's size; a literal must be
   // a value of the block's type.
   void parameters() {
-    static const std::set<std::string> numeric{"k", "lower", "upper", "gain",  "initial", "p",
-                                               "i", "d",     "n",     "value", "limit",   "table"};
+    static const std::set<std::string> numeric{
+        "k",     "lower",     "upper",     "gain",        "initial", "p", "i", "d", "n", "value", "limit",     "table",
+        "final", "amplitude", "numerator", "denominator", "a",       "b", "c", "g", "q", "r",     "covariance"};
+    // Blocks whose parameters are matrices, checked by matrices(), not element by element.
+    const bool elementwise = !is({"StateSpace", "KalmanFilter", "StateFeedback", "TransferFunction"});
     if (block_.outputs.empty() || block_.type() == "Lookup") return;  // a Lookup's table gives it its type
     const SignalType& working = program_.signals[block_.outputs[0]].type;
     for (const auto& [parameter_name, argument] : block_.arguments) {
@@ -410,7 +591,7 @@ class BlockCheck {
                 "type mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name_ +
                     " computes in " + std::string{type_name(expected)},
                 "declare '" + parameter.name + "' with type: " + std::string{type_name(expected)});
-        } else if (!given.shape.empty() && given.elements() != on.elements()) {
+        } else if (elementwise && !given.shape.empty() && given.elements() != on.elements()) {
           error(argument.location,
                 "size mismatch: parameter '" + parameter.name + "' is " + describe(given) + " but " + name_ +
                     " computes on " + describe(on),
@@ -428,7 +609,7 @@ class BlockCheck {
           break;
         }
       }
-      if (block_.type() != "Constant" && !argument.value.shape.empty() &&
+      if (block_.type() != "Constant" && elementwise && !argument.value.shape.empty() &&
           argument.value.elements.size() != on.elements()) {
         error(argument.location,
               "size mismatch: parameter '" + parameter_name + "' of " + name_ + " has " +

@@ -172,10 +172,13 @@ class Validator {
     if (type.variadic_inputs) {
       const auto numbered = static_cast<std::size_t>(std::count_if(
           block.inputs.begin(), block.inputs.end(), [](const Connection& c) { return is_numbered_input(c.port); }));
-      for (std::size_t k = 1; k <= std::max<std::size_t>(2, numbered); ++k) {
+      // Arithmetic needs two operands; a message may be one value.
+      const std::size_t fewest = block.type == "IpcSend" || block.type == "BytePack" ? 1 : 2;
+      for (std::size_t k = 1; k <= std::max(fewest, numbered); ++k) {
         if (connected.count("u" + std::to_string(k)) == 0) {
           error(block.location, "input 'u" + std::to_string(k) + "' of block '" + block.name + "' is not connected",
-                "a " + block.type + " takes inputs u1, u2, ... without gaps, at least two");
+                "a " + block.type + " takes inputs u1, u2, ... without gaps, at least " +
+                    (fewest == 1 ? "one" : "two"));
           break;
         }
       }

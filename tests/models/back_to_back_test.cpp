@@ -7,6 +7,7 @@
 #include <memory>
 #include <random>
 
+#include "balbot.hpp"
 #include "duet/hardware/hardware.hpp"
 #include "duet/host/lock_step_port.hpp"
 #include "duet/model/generate.hpp"
@@ -117,7 +118,13 @@ Recording run_generated(const Example& example, LoggingPlant& plant) {
   const double period_s = example.description.base_period_ns * 1e-9;
   for (std::uint64_t tick = 0; tick < example.ticks; ++tick) {
     if (example.tune_generated) example.tune_generated(tick);
-    plant.advance(static_cast<double>(tick) * period_s, [](std::string_view) {});
+    // The plant raises interrupts by name: the generated task table names each interrupt task after its interrupt.
+    plant.advance(static_cast<double>(tick) * period_s, [&](std::string_view interrupt) {
+      for (std::size_t task = 0; task < example.description.tasks.size(); ++task) {
+        const rt::Task& entry = example.description.tasks[task];
+        if (entry.kind == rt::TaskKind::interrupt && entry.name == interrupt) port.raise(task);
+      }
+    });
     port.advance(1);
     recording.time_s.push_back(static_cast<double>(tick) * period_s);
     std::size_t column = 0;
@@ -222,6 +229,8 @@ std::vector<Example> examples() {
        },
        plant_model("thermostat/heater.yaml"),
        {"heating", "sample"}},
+      // The self-balancing robot against a Loopback: its initialisation, sources and standby logic run.
+      {"balbot", balbot::description, &balbot::signals, 3000, {}, {}, {}, {"sensor_ready", "stop", "standby_off"}},
   };
 }
 

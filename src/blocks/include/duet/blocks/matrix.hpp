@@ -1,6 +1,6 @@
 #pragma once
-// Matrix product (Simulink's Product block in matrix mode). Pure; interrupt-safe as long as no other task writes
-// the operands or the result meanwhile.
+// Matrix product and transpose (Simulink's Product block in matrix mode, Transpose). Pure; interrupt-safe as long as no
+// other task writes the operands or the result meanwhile.
 
 #include <cstddef>
 
@@ -24,6 +24,15 @@ constexpr void matrix_multiply(const T* a, const T* b, T* y, std::size_t rows, s
       for (std::size_t k = 1; k < inner; ++k) acc = add(acc, multiply(a[r * inner + k], b[k * columns + c]));
       y[r * columns + c] = acc;
     }
+  }
+}
+
+// y = a^T for row-major a (rows x columns) and y (columns x rows): y[c * rows + r] = a[r * columns + c]. Copies only,
+// so it computes nothing that could round. Precondition: y does not overlap a.
+template <Element T>
+constexpr void matrix_transpose(const T* a, T* y, std::size_t rows, std::size_t columns) {
+  for (std::size_t r = 0; r < rows; ++r) {
+    for (std::size_t c = 0; c < columns; ++c) y[c * rows + r] = a[r * columns + c];
   }
 }
 

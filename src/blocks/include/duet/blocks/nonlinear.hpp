@@ -1,5 +1,6 @@
 #pragma once
-// Saturation, absolute value and selection (Simulink's Saturation, Abs and Switch). Pure and interrupt-safe.
+// Saturation, absolute value, sign, minimum and maximum, and selection (Simulink's Saturation, Abs, Sign, MinMax and
+// Switch). Pure and interrupt-safe.
 
 #include <limits>
 #include <type_traits>
@@ -36,6 +37,36 @@ constexpr T absolute(T u) {
   } else {
     return u;
   }
+}
+
+// -1, 0 or +1 as u is below, equal to or above 0 (Simulink's Sign). 0 and -0.0 give 0 (+0.0), and so does a NaN:
+// both comparisons are false for it, so a NaN input never decides a direction. Unsigned u gives 0 or 1.
+template <Number T>
+constexpr T sign(T u) {
+  if (u > T{0}) return T{1};
+  if constexpr (std::is_signed_v<T>) {
+    if (u < T{0}) return T{-1};
+  }
+  return T{0};
+}
+
+// The smaller and the larger of two values (Simulink's MinMax with two inputs). Floating point follows IEEE 754's
+// minNum and maxNum: if exactly one operand is a NaN the other one is returned, so a single NaN input does not reach
+// the output; two NaNs give a NaN (b). Equal operands give a, also +0.0 and -0.0 (minimum(+0.0, -0.0) is +0.0).
+template <Number T>
+constexpr T minimum(T a, T b) {
+  if constexpr (Floating<T>) {
+    if (detail::is_nan(a)) return b;
+  }
+  return b < a ? b : a;  // false for a NaN b: a is returned
+}
+
+template <Number T>
+constexpr T maximum(T a, T b) {
+  if constexpr (Floating<T>) {
+    if (detail::is_nan(a)) return b;
+  }
+  return b > a ? b : a;  // false for a NaN b: a is returned
 }
 
 // Simulink's Switch with a boolean control input: on when condition holds, off otherwise.

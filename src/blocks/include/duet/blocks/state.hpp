@@ -53,6 +53,20 @@ struct DiscreteDerivative {
   constexpr void update(T u) { previous = u; }
 };
 
+// The derivative of DiscretePid on its own: gain * N / (1 + N * Ts / (z - 1)), a derivative through a first-order
+// filter with coefficient N (1/s), forward Euler (Simulink's Discrete PID Controller with only D, or Discrete Filtered
+// Derivative). filter starts as the filter's state (usually 0: the first output is n * gain * u):
+//   y      = multiply(n, subtract(multiply(gain, u), filter))
+//   filter = add(filter, multiply(period_s, y))
+// exactly DiscretePid's derivative and filter, so both round alike.
+template <Floating T>
+struct FilteredDerivative {
+  T filter;
+
+  [[nodiscard]] constexpr T output(T u, T gain, T n) const { return multiply(n, subtract(multiply(gain, u), filter)); }
+  constexpr void update(T u, T gain, T n, T period_s) { filter = add(filter, multiply(period_s, output(u, gain, n))); }
+};
+
 // Parallel PID gains: proportional, integral, derivative, derivative filter coefficient N (1/s) and the output limits.
 template <Floating T>
 struct PidGains {
@@ -66,12 +80,21 @@ struct PidGains {
 
 // Simulink's parallel discrete PID with forward Euler for both the integrator and the derivative filter:
 //   P + I * Ts / (z - 1) + D * N / (1 + N * Ts / (z - 1))
-// with the output limited but no anti-windup (the integrator keeps integrating while the output saturates):
+// with the output limited. update() has no anti-windup (the integrator keeps integrating while the output saturates):
 //   derivative = multiply(n, subtract(multiply(d, error), filter))
 //   y          = saturate(add(add(multiply(p, error), integrator), derivative), lower, upper)
 //   filter     = add(filter, multiply(period_s, derivative))
 //   integrator = add(integrator, multiply(multiply(i, period_s), error))
-// update() needs the gains and error that output() saw in the same step; it recomputes the derivative from them.
+// update_clamped() is Simulink's "clamping" anti-windup: it updates filter as above but leaves the integrator as it is
+// in a step where integrating would drive the output further into saturation, that is where
+//   unlimited = add(add(multiply(p, error), integrator), derivative)    (y before saturate)
+//   increment = multiply(multiply(i, period_s), error)                  (what update() would add)
+//   (unlimited > upper and increment > 0) or (unlimited < lower and increment < 0)
+// The sign that counts is the integrator input's, compared with the sign of the excess unlimited - saturate(unlimited),
+// as Simulink does; it is the error's sign for positive i and period_s. An output exactly at a limit has no excess: the
+// integrator integrates. A NaN unlimited output or increment clamps nothing (every comparison is false).
+// update() and update_clamped() need the gains and error that output() saw in the same step; they recompute the
+// derivative from them.
 template <Floating T>
 struct DiscretePid {
   T integrator;
@@ -85,6 +108,15 @@ struct DiscretePid {
     const T filter_input = derivative(error, gains);  // before filter changes: the same value output() used
     filter = add(filter, multiply(period_s, filter_input));
     integrator = add(integrator, multiply(multiply(gains.i, period_s), error));
+  }
+
+  constexpr void update_clamped(T error, const PidGains<T>& gains, T period_s) {
+    const T filter_input = derivative(error, gains);
+    const T unlimited = add(add(multiply(gains.p, error), integrator), filter_input);
+    const T increment = multiply(multiply(gains.i, period_s), error);
+    const bool clamped = (unlimited > gains.upper && increment > T{0}) || (unlimited < gains.lower && increment < T{0});
+    filter = add(filter, multiply(period_s, filter_input));
+    if (!clamped) integrator = add(integrator, increment);
   }
 
  private:
