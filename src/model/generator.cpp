@@ -493,8 +493,9 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
 
 std::string Generator::update_statements(const ProgramBlock& block) const {
   const std::string& type = block.type();
+  if (block.outputs.empty()) return {};  // unconnected: no state member (has_state_member)
   if (type == "RateTransition") return rate_transition_update(block);
-  if (block.outputs.empty() || !has_state(type)) return {};
+  if (!has_state(type)) return {};
   const SignalType& out = program_.signals[block.outputs[0]].type;
   const std::size_t n = out.elements();
   const DataType t = out.type;
@@ -752,7 +753,7 @@ std::string Generator::code_call(const ProgramBlock& block) const {
 // element by element, as the interpreter hands them to the plant.
 std::string Generator::hardware_output(const ProgramBlock& block) const {
   const std::string& type = block.type();
-  if (type == "Outport") return {};
+  if (type == "Outport" || hardware_resource(block).empty()) return {};  // or a block with its outputs unconnected
   if (type == "GpioOut") {
     return "  duet::hardware::gpio_write(" + block.identifier + "_pin, " + element(block.inputs[0], "0") + ");\n";
   }

@@ -844,6 +844,8 @@ Compiled compile(Compiler& c, const ProgramBlock& block, const UserCodeLibrary* 
   if (block.block->code) return code_block(c, block, user_code->function(index));
   const std::string& type = block.type();
   if (type == "Outport") return {};
+  // A block whose outputs the model leaves unconnected computes nothing, as in generated code.
+  if (block.outputs.empty() && hardware_resource(block).empty()) return {};
   if (type == "RateTransition") return rate_transition(c, block);
   if (type == "Logic") return logic(c, block);
   if (type == "BytePack" || type == "ByteUnpack") return bytes(c, block);

@@ -89,7 +89,9 @@ TEST_P(Mutated, ModelsWorkOrSayWhereTheyFail) {
   EXPECT_GT(generated, 0U);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, Mutated, ::testing::Values("step_time", "transfer_test", "pid_demo", "thermostat"));
+INSTANTIATE_TEST_SUITE_P(Examples, Mutated,
+                         ::testing::Values("step_time", "transfer_test", "pid_demo", "thermostat", "block_tour",
+                                           "balbot"));
 
 }  // namespace
 }  // namespace duet::model

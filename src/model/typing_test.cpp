@@ -254,6 +254,56 @@ const Case cases[] = {
      "      - {name: c, type: Counter, parameters: {limit: 9}, outputs: {y: m}}\n",
      "m.yaml:7:5: error: type mismatch: subsystem 's' is enabled by signal 'level', which is double (an enabling "
      "signal is one boolean: make it with a Compare block)\n"},
+    {"byte_unpack_past_its_input", "",
+     "  - {name: c, type: Constant, parameters: {value: 1, type: single}, outputs: {y: x}}\n"
+     "  - {name: p, type: BytePack, inputs: {u1: x}, outputs: {y: bytes}}\n"
+     "  - {name: u, type: ByteUnpack, parameters: {type: uint32, offset: 2}, inputs: {u: bytes}, outputs: {y: n}}\n",
+     "m.yaml:7:5: error: block 'u' (ByteUnpack) reads bytes 2 to 5 of input 'u' (signal 'bytes'), which has 4 (check "
+     "offset, count and type)\n"},
+    {"byte_unpack_of_doubles", "",
+     "  - {name: c, type: Constant, parameters: {value: [1, 2]}, outputs: {y: x}}\n"
+     "  - {name: u, type: ByteUnpack, parameters: {type: int16}, inputs: {u: x}, outputs: {y: n}}\n",
+     "m.yaml:6:69: error: type mismatch: block 'u' (ByteUnpack) reads bytes, but input 'u' (signal 'x') is double[2] "
+     "(give it uint8 elements (an SpiDma's, an IpcReceive's))\n"},
+    {"product_signs_other_than_times_and_divide", "",
+     "  - {name: c, type: Constant, parameters: {value: 2}, outputs: {y: x}}\n"
+     "  - {name: p, type: Product, parameters: {signs: '*+'}, inputs: {u1: x, u2: x}, outputs: {y: y}}\n",
+     "m.yaml:6:50: error: signs '*+' of block 'p' (Product) are not one * or / per input (u1 first: '*/' is u1 / "
+     "u2)\n"},
+    {"kalman_filter_r_of_the_wrong_size", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: m}}\n"
+     "  - name: k\n    type: KalmanFilter\n"
+     "    parameters: {a: [[1, 1], [0, 1]], c: [[1, 0]], g: [[0], [1]], q: [[1]], r: [[1, 0], [0, 1]]}\n"
+     "    inputs: {measured: m}\n    outputs: {estimate: x}\n",
+     "m.yaml:8:80: error: size mismatch: parameter 'r' of block 'k' (KalmanFilter) is 2x2, but it must be 1x1 "
+     "(matrices are lists of rows; a vector input is a column)\n"},
+    {"kalman_filter_with_gain_and_q", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: m}}\n"
+     "  - name: k\n    type: KalmanFilter\n"
+     "    parameters: {a: [[1, 1], [0, 1]], c: [[1, 0]], gain: [[0.5], [0.1]], q: [[1]]}\n"
+     "    inputs: {measured: m}\n    outputs: {estimate: x}\n",
+     "m.yaml:8:77: error: block 'k' (KalmanFilter) is given a steady-state gain and 'q' (give either gain (steady "
+     "state) or g, q and r (time-varying))\n"},
+    {"transfer_function_of_unequal_lengths", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: u}}\n"
+     "  - name: h\n    type: TransferFunction\n"
+     "    parameters: {numerator: [1, 0.5], denominator: [1, -0.5, 0.25]}\n"
+     "    inputs: {u: u}\n    outputs: {y: y}\n",
+     "m.yaml:8:52: error: block 'h' (TransferFunction) has 2 numerator and 3 denominator coefficients (give N+1 of "
+     "each (order N >= 1, highest power of z first; pad the numerator with leading zeros))\n"},
+    {"unknown_min_max_function", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: m, type: MinMax, parameters: {function: mid}, inputs: {u1: x, u2: x}, outputs: {y: y}}\n",
+     "m.yaml:6:52: error: block 'm' (MinMax) has no function 'mid' (give min or max)\n"},
+    {"tunable_pulse_period", "parameters:\n  T: 0.5\n",
+     "  - {name: p, type: PulseGenerator, parameters: {period_s: T, width_s: 0.1}, outputs: {y: y}}\n",
+     "m.yaml:7:60: error: parameter 'period_s' of block 'p' (PulseGenerator) names the tunable parameter 'T', but it "
+     "sizes the generated code (give a number, or a constant (constants: in the model))\n"},
+    {"moving_average_of_no_window", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: a, type: MovingAverage, parameters: {window: 0}, inputs: {u: x}, outputs: {y: y}}\n",
+     "m.yaml:6:57: error: parameter 'window' of block 'a' (MovingAverage) must be one number, 1 or more (for example "
+     "window: 1)\n"},
 };
 
 class Mistyped : public ::testing::TestWithParam<Case> {};

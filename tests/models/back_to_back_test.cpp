@@ -8,6 +8,7 @@
 #include <random>
 
 #include "balbot.hpp"
+#include "block_tour.hpp"
 #include "duet/hardware/hardware.hpp"
 #include "duet/host/lock_step_port.hpp"
 #include "duet/model/generate.hpp"
@@ -156,6 +157,12 @@ namespace thermostat_parameter {
 constexpr std::size_t setpoint = 0;
 }  // namespace thermostat_parameter
 
+// block_tour's.
+namespace block_tour_parameter {
+constexpr std::size_t tf_den = 0;
+constexpr std::size_t ss_a = 1;
+}  // namespace block_tour_parameter
+
 std::vector<Example> examples() {
   std::vector<std::uint16_t> table(4096);
   std::mt19937 random{2026};
@@ -231,6 +238,53 @@ std::vector<Example> examples() {
        {"heating", "sample"}},
       // The self-balancing robot against a Loopback: its initialisation, sources and standby logic run.
       {"balbot", balbot::description, &balbot::signals, 3000, {}, {}, {}, {"sensor_ready", "stop", "standby_off"}},
+      // Every block type the other examples leave out, fed by sources; at 1500 the transfer function's a1 and the
+      // state space's A[1][0] are tuned.
+      {"block_tour",
+       block_tour::description,
+       &block_tour::signals,
+       3000,
+       [](std::uint64_t tick, Interpreter& model) {
+         if (tick == 1500) model.set_parameter(block_tour_parameter::tf_den, 1, -1.5);
+         if (tick == 1500) model.set_parameter(block_tour_parameter::ss_a, 2, -0.09);
+       },
+       [](std::uint64_t tick) {
+         if (tick == 1500) block_tour::parameters.tf_den[1] = -1.5;
+         if (tick == 1500) block_tour::parameters.ss_a[2] = -0.09F;
+       },
+       {},
+       {"saw_sign",
+        "minimum",
+        "maximum",
+        "quotient",
+        "inverse",
+        "pulse",
+        "late",
+        "step",
+        "square",
+        "word",
+        "frame_big[0]",
+        "frame_big[5]",
+        "frame_little[0]",
+        "frame_little[10]",
+        "word_back",
+        "rate_back",
+        "count_back",
+        "halves[0]",
+        "rate",
+        "filtered",
+        "oscillator_y[0]",
+        "oscillator_y[1]",
+        "oscillator_mean",
+        "smoothed",
+        "tracked[0]",
+        "tracked[1]",
+        "feedback",
+        "estimate[0]",
+        "estimate[1]",
+        "error",
+        "command",
+        "position"}},
   };
 }
 
