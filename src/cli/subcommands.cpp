@@ -2,8 +2,10 @@
 
 #include <ostream>
 
+#include "design_command.hpp"
 #include "gen_command.hpp"
 #include "model_command.hpp"
+#include "plant_command.hpp"
 #include "sched_command.hpp"
 #include "sim_command.hpp"
 #include "subcommand.hpp"
@@ -28,6 +30,9 @@ constexpr Subcommand table[] = {
     {"sched", "Analyse the schedulability of an interrupt task set and assign NVIC priorities", define_sched_command},
     {"monitor", "Serve the dashboard for a target reached over XCP", planned<10>},
     {"model", "Check a model file and describe its blocks, signals and tasks", define_model_command},
+    {"design", "Design LQR and steady-state Kalman gains and print them as model parameters", define_design_command},
+    {"plant", "Serve a simulated plant to firmware in another process over the virtual-hardware link",
+     define_plant_command},
 };
 
 }  // namespace

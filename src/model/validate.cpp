@@ -176,9 +176,9 @@ class Validator {
       const std::size_t fewest = block.type == "IpcSend" || block.type == "BytePack" ? 1 : 2;
       for (std::size_t k = 1; k <= std::max(fewest, numbered); ++k) {
         if (connected.count("u" + std::to_string(k)) == 0) {
-          error(block.location, "input 'u" + std::to_string(k) + "' of block '" + block.name + "' is not connected",
-                "a " + block.type + " takes inputs u1, u2, ... without gaps, at least " +
-                    (fewest == 1 ? "one" : "two"));
+          error(
+              block.location, "input 'u" + std::to_string(k) + "' of block '" + block.name + "' is not connected",
+              "a " + block.type + " takes inputs u1, u2, ... without gaps, at least " + (fewest == 1 ? "one" : "two"));
           break;
         }
       }

@@ -1,7 +1,9 @@
 #include "duet/plant/plant.hpp"
 
 #include <algorithm>
+#include <array>
 
+#include "duet/plant/balbot/balbot_plant.hpp"
 #include "duet/support/closest_word.hpp"
 
 namespace duet::plant {
@@ -32,10 +34,31 @@ std::vector<double> Loopback::value(std::string_view resource) const {
   return {};
 }
 
-std::vector<std::string> plant_names() { return {"none"}; }
+namespace {
 
-Result<std::unique_ptr<Plant>> make_plant(std::string_view name, std::uint64_t) {
-  if (name == "none") return std::unique_ptr<Plant>{std::make_unique<Loopback>()};
+// The plants by name: one line each.
+struct NamedPlant {
+  std::string_view name;
+  std::unique_ptr<Plant> (*make)(std::uint64_t seed);
+};
+constexpr std::array<NamedPlant, 2> plants{{
+    {"none", [](std::uint64_t) -> std::unique_ptr<Plant> { return std::make_unique<Loopback>(); }},
+    {"balbot", [](std::uint64_t seed) -> std::unique_ptr<Plant> { return make_balbot_plant(seed); }},
+}};
+
+}  // namespace
+
+std::vector<std::string> plant_names() {
+  std::vector<std::string> names;
+  names.reserve(plants.size());
+  for (const NamedPlant& plant : plants) names.emplace_back(plant.name);
+  return names;
+}
+
+Result<std::unique_ptr<Plant>> make_plant(std::string_view name, std::uint64_t seed) {
+  for (const NamedPlant& plant : plants) {
+    if (plant.name == name) return plant.make(seed);
+  }
   const std::vector<std::string> names = plant_names();
   const std::vector<std::string_view> views(names.begin(), names.end());
   const auto closest = closest_word(name, views);

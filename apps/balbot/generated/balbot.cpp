@@ -47,27 +47,28 @@ static_assert(offsetof(Signals, requests_sent) == 24, "the A2L's layout");
 static_assert(offsetof(Signals, mpu_bytes_received) == 28, "the A2L's layout");
 static_assert(offsetof(Signals, theta_acc) == 44, "the A2L's layout");
 static_assert(offsetof(Signals, gyro_y) == 48, "the A2L's layout");
-static_assert(offsetof(Signals, theta) == 52, "the A2L's layout");
-static_assert(offsetof(Signals, theta_rate) == 56, "the A2L's layout");
-static_assert(offsetof(Signals, error) == 60, "the A2L's layout");
-static_assert(offsetof(Signals, y) == 64, "the A2L's layout");
-static_assert(offsetof(Signals, stop) == 68, "the A2L's layout");
-static_assert(offsetof(Signals, standby_off) == 69, "the A2L's layout");
-static_assert(offsetof(Signals, left_in1) == 70, "the A2L's layout");
-static_assert(offsetof(Signals, left_in2) == 71, "the A2L's layout");
-static_assert(offsetof(Signals, duty_percent) == 72, "the A2L's layout");
-static_assert(offsetof(Signals, speed_left_captured) == 76, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_left) == 80, "the A2L's layout");
-static_assert(offsetof(Signals, speed_right_captured) == 84, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_right) == 88, "the A2L's layout");
-static_assert(offsetof(Signals, echo_captured) == 92, "the A2L's layout");
-static_assert(offsetof(Signals, distance) == 96, "the A2L's layout");
-static_assert(offsetof(Signals, adc_samples_received) == 100, "the A2L's layout");
-static_assert(offsetof(Signals, battery_voltage) == 300, "the A2L's layout");
-static_assert(offsetof(Signals, message) == 304, "the A2L's layout");
-static_assert(offsetof(Signals, gains_received) == 316, "the A2L's layout");
-static_assert(offsetof(Signals, linux_gains) == 328, "the A2L's layout");
-static_assert(sizeof(Signals) == 340);
+static_assert(offsetof(Signals, estimate) == 52, "the A2L's layout");
+static_assert(offsetof(Signals, theta) == 60, "the A2L's layout");
+static_assert(offsetof(Signals, theta_rate) == 64, "the A2L's layout");
+static_assert(offsetof(Signals, error) == 68, "the A2L's layout");
+static_assert(offsetof(Signals, y) == 72, "the A2L's layout");
+static_assert(offsetof(Signals, stop) == 76, "the A2L's layout");
+static_assert(offsetof(Signals, standby_off) == 77, "the A2L's layout");
+static_assert(offsetof(Signals, left_in1) == 78, "the A2L's layout");
+static_assert(offsetof(Signals, left_in2) == 79, "the A2L's layout");
+static_assert(offsetof(Signals, duty_percent) == 80, "the A2L's layout");
+static_assert(offsetof(Signals, speed_left_captured) == 84, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_left) == 88, "the A2L's layout");
+static_assert(offsetof(Signals, speed_right_captured) == 92, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_right) == 96, "the A2L's layout");
+static_assert(offsetof(Signals, echo_captured) == 100, "the A2L's layout");
+static_assert(offsetof(Signals, distance) == 104, "the A2L's layout");
+static_assert(offsetof(Signals, adc_samples_received) == 108, "the A2L's layout");
+static_assert(offsetof(Signals, battery_voltage) == 308, "the A2L's layout");
+static_assert(offsetof(Signals, message) == 312, "the A2L's layout");
+static_assert(offsetof(Signals, gains_received) == 324, "the A2L's layout");
+static_assert(offsetof(Signals, linux_gains) == 336, "the A2L's layout");
+static_assert(sizeof(Signals) == 348);
 
 Parameters parameters{
     .P = 0.0196F,
@@ -145,11 +146,11 @@ void initialize() {
   state.interrupt_enable_trigger_edge.previous = false;
   state.transmit_complete_requests.count = std::uint32_t{1};
   state.mpu_bytes_to_step.reset({std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}});
-  state.kalman = {};
-  state.kalman.x[0] = 0.0F;
-  state.kalman.x[1] = 0.0F;
-  state.kalman.p[0] = 1.0F;
-  state.kalman.p[3] = 1.0F;
+  state.filter_kalman = {};
+  state.filter_kalman.x[0] = 0.0F;
+  state.filter_kalman.x[1] = 0.0F;
+  state.filter_kalman.p[0] = 1.0F;
+  state.filter_kalman.p[3] = 1.0F;
   state.controller = {0.0F, 0.0F};
   state.set_duty_latest.reset(0.0F);
   state.left_to_step.reset(0.0F);
@@ -236,12 +237,13 @@ void step_rate_1() {
   float measured[2]{};
   measured[0] = signals.theta_acc;
   measured[1] = signals.gyro_y;
-  // kalman (KalmanFilter)
-  float estimate[2]{};
-  state.kalman.output(measured, p.kalman_C, p.kalman_R, estimate);
+  // filter/kalman (KalmanFilter)
+  if (duet::blocks::convert<bool>(signals.sensor_ready)) {
+    state.filter_kalman.output(measured, p.kalman_C, p.kalman_R, signals.estimate);
+  }
   // estimates (Demux)
-  signals.theta = estimate[0];
-  signals.theta_rate = estimate[1];
+  signals.theta = signals.estimate[0];
+  signals.theta_rate = signals.estimate[1];
   // compare (Sum)
   signals.error = duet::blocks::subtract(p.target, signals.theta);
   // controller (DiscretePid)
@@ -344,7 +346,9 @@ void step_rate_1() {
     for (std::size_t i = 0; i < 3; ++i) signals.linux_gains[i] = value[i];
   }
   state.init_done.update();
-  state.kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q, p.kalman_R);
+  if (duet::blocks::convert<bool>(signals.sensor_ready)) {
+    state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q, p.kalman_R);
+  }
   state.controller.update_clamped(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F}, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();

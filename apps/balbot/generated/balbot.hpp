@@ -60,6 +60,7 @@ struct Signals {
   std::uint8_t mpu_bytes_received[15];
   float theta_acc;
   float gyro_y;
+  float estimate[2];
   float theta;
   float theta_rate;
   float error;
@@ -116,7 +117,7 @@ struct State {
   duet::blocks::EdgeDetector<bool> interrupt_enable_trigger_edge;
   duet::blocks::Counter<std::uint32_t> transmit_complete_requests;
   duet::rt::AsyncTransfer<std::array<std::uint8_t, 15>> mpu_bytes_to_step;
-  duet::blocks::KalmanFilter<float, 2, 2, 1> kalman;
+  duet::blocks::KalmanFilter<float, 2, 2, 1> filter_kalman;
   duet::blocks::DiscretePid<float> controller;
   duet::rt::AsyncTransfer<float> set_duty_latest;
   duet::rt::AsyncTransfer<float> left_to_step;

@@ -50,7 +50,8 @@ class Loopback : public Plant {
   std::size_t writes_ = 0;
 };
 
-// The plants `duet sim --plant NAME` knows, by name: "none" (a Loopback). `seed` makes noisy plants repeatable.
+// The plants `duet sim --plant NAME` knows, by name: "none" (a Loopback), "balbot" (the self-balancing robot,
+// src/plant/balbot/README.md). `seed` makes noisy plants repeatable.
 [[nodiscard]] Result<std::unique_ptr<Plant>> make_plant(std::string_view name, std::uint64_t seed);
 [[nodiscard]] std::vector<std::string> plant_names();
 

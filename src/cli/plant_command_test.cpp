@@ -1,0 +1,191 @@
+// `duet plant serve` as a user types it: command lines it refuses, and the program itself serving a firmware that
+// connects over TCP (the program runs as a child process, its first line of output read to learn its port).
+#include <fcntl.h>
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "duet/link/remote_plant.hpp"
+#include "duet/link/stream.hpp"
+#include "duet/link/tcp.hpp"
+#include "run_for_test.hpp"
+
+extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
+
+namespace duet::cli {
+namespace {
+
+using namespace std::chrono_literals;
+
+TEST(PlantCommand, BadCommandLinesSayWhatIsWrong) {
+  const Outcome unknown = run({"plant", "serve", "nonee"});
+  EXPECT_EQ(unknown.exit_code, ExitCode::failure);
+  EXPECT_EQ(unknown.err, "duet plant serve: unknown plant 'nonee' (did you mean 'none'?)\n");
+  EXPECT_EQ(unknown.out, "");
+
+  const Outcome no_port = run({"plant", "serve", "none", "--listen", "127.0.0.1"});
+  EXPECT_EQ(no_port.exit_code, ExitCode::usage);
+  EXPECT_NE(no_port.err.find("'127.0.0.1' is not HOST:PORT (no ':' before the port)"), std::string::npos)
+      << no_port.err;
+
+  const Outcome no_name = run({"plant", "serve"});
+  EXPECT_EQ(no_name.exit_code, ExitCode::usage);
+  EXPECT_NE(no_name.err.find("name is required"), std::string::npos) << no_name.err;
+
+  const Outcome no_action = run({"plant"});
+  EXPECT_EQ(no_action.exit_code, ExitCode::usage);
+
+  const Outcome negative = run({"plant", "serve", "none", "--timeout", "-1"});
+  EXPECT_EQ(negative.exit_code, ExitCode::usage);
+
+  const Outcome scenario_for_none = run({"plant", "serve", "none", "--scenario", "robot.yaml"});
+  EXPECT_EQ(scenario_for_none.exit_code, ExitCode::failure);
+  EXPECT_EQ(scenario_for_none.err, "duet plant serve: --scenario is for the balbot plant; plant 'none' takes none\n");
+
+  const Outcome missing_scenario = run({"plant", "serve", "balbot", "--scenario", "/nonexistent/robot.yaml"});
+  EXPECT_EQ(missing_scenario.exit_code, ExitCode::failure);
+  EXPECT_NE(missing_scenario.err.find("/nonexistent/robot.yaml"), std::string::npos) << missing_scenario.err;
+}
+
+TEST(PlantCommand, APortInUse) {
+  auto taken = link::TcpListener::open({"127.0.0.1", 0});
+  ASSERT_TRUE(taken.ok()) << taken.error();
+  const std::string address = link::to_string(taken.value().address());
+  const Outcome outcome = run({"plant", "serve", "none", "--listen", address});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, "duet plant serve: cannot listen on " + address + ": Address already in use\n");
+}
+
+// The program as a child process, its standard output and error on pipes.
+class Child {
+ public:
+  explicit Child(const std::vector<std::string>& arguments) {
+    int out[2] = {-1, -1};
+    int err[2] = {-1, -1};
+    if (::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0) return;
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
+    posix_spawn_file_actions_adddup2(&actions, err[1], STDERR_FILENO);
+    std::vector<std::string> words{DUET_PROGRAM};
+    words.insert(words.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    argv.reserve(words.size() + 1);
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    if (posix_spawn(&pid_, DUET_PROGRAM, &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(out[1]);
+    ::close(err[1]);
+    output_ = std::make_unique<link::FdStream>(out[0], out[0], 20s);
+    errors_ = std::make_unique<link::FdStream>(err[0], err[0], 20s);
+  }
+  ~Child() {
+    if (pid_ > 0) (void)wait();
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+
+  // One line of its standard output, without the newline.
+  std::string line() { return read_line(*output_); }
+  // One line of its standard error.
+  std::string error_line() { return read_line(*errors_); }
+  // Its exit code.
+  int wait() {
+    int status = 0;
+    ::waitpid(std::exchange(pid_, -1), &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  [[nodiscard]] bool started() const { return pid_ > 0; }
+
+ private:
+  static std::string read_line(link::Stream& stream) {
+    std::string text;
+    std::uint8_t byte = 0;
+    while (stream.read_exactly({&byte, 1}).ok() && byte != '\n') text += static_cast<char>(byte);
+    return text;
+  }
+
+  pid_t pid_ = -1;
+  std::unique_ptr<link::FdStream> output_;
+  std::unique_ptr<link::FdStream> errors_;
+};
+
+// Where the child listens, from its first line ("plant NAME listening on HOST:PORT").
+link::HostPort listening_address(Child& program, const std::string& name) {
+  const std::string line = program.line();
+  const std::string prefix = "plant " + name + " listening on ";
+  EXPECT_TRUE(line.starts_with(prefix)) << line;
+  auto address = link::parse_host_port(line.substr(std::min(prefix.size(), line.size())));
+  EXPECT_TRUE(address.ok()) << line;
+  return address ? address.value() : link::HostPort{};
+}
+
+TEST(PlantCommand, TheProgramServesOneFirmwareAndSaysHowItWent) {
+  Child program{{"plant", "serve", "none", "--listen", "127.0.0.1:0", "--once"}};
+  ASSERT_TRUE(program.started());
+  const link::HostPort address = listening_address(program, "none");
+  EXPECT_EQ(address.host, "127.0.0.1");
+  auto stream = link::connect_tcp(address, 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.002});
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  link::RemotePlant& plant = *connected.value();
+  const double duty = 0.75;
+  plant.write("pwm:TIM1/1", {&duty, 1});
+  plant.advance(0, {});
+  double back = 0;
+  plant.read("pwm:TIM1/1", {&back, 1});
+  EXPECT_EQ(back, 0.75);  // the plant "none" answers what was written
+  ASSERT_TRUE(plant.ok()) << plant.error();
+  EXPECT_TRUE(plant.close().ok());
+  const std::string served = program.line();
+  EXPECT_TRUE(served.starts_with("served 127.0.0.1:")) << served;
+  EXPECT_TRUE(served.ends_with(": 1 ticks, 0 interrupts, 1 writes, 1 reads (lock-step, base period 2000 us)"))
+      << served;
+  EXPECT_EQ(program.wait(), 0);
+}
+
+TEST(PlantCommand, TheRobotOfAScenario) {
+  const std::filesystem::path scenario =
+      std::filesystem::temp_directory_path() / ("duet_plant_serve_" + std::to_string(::getpid()) + ".yaml");
+  std::ofstream{scenario} << "initial_tilt_deg: 3\nnoise: false\n";
+  Child program{{"plant", "serve", "balbot", "--scenario", scenario.string(), "--listen", ":0", "--once"}};
+  ASSERT_TRUE(program.started());
+  auto stream = link::connect_tcp(listening_address(program, "balbot"), 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.001});
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  for (int tick = 0; tick < 20; ++tick) connected.value()->advance(tick * 0.001, [](std::string_view) {});
+  EXPECT_TRUE(connected.value()->ok()) << connected.value()->error();
+  connected.value().reset();
+  const std::string served = program.line();
+  EXPECT_NE(served.find(": 20 ticks, "), std::string::npos) << served;
+  EXPECT_EQ(program.wait(), 0);
+  std::filesystem::remove(scenario);
+}
+
+TEST(PlantCommand, AFirmwareThatBreaksTheLinkFailsTheSession) {
+  Child program{{"plant", "serve", "none", "--listen", ":0", "--once"}};
+  ASSERT_TRUE(program.started());
+  auto stream = link::connect_tcp(listening_address(program, "none"), 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  const std::array<std::uint8_t, 3> garbage{0x42, 0, 0};
+  EXPECT_TRUE(stream.value()->write_all(garbage).ok());
+  const std::string error = program.error_line();
+  EXPECT_TRUE(error.starts_with("duet plant serve: 127.0.0.1:")) << error;
+  EXPECT_TRUE(error.ends_with(": the firmware sent a bad frame (unknown frame kind 0x42) while awaiting HELLO"))
+      << error;
+  EXPECT_EQ(program.wait(), 1);
+}
+
+}  // namespace
+}  // namespace duet::cli
