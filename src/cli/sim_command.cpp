@@ -2,16 +2,21 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <memory>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "checked_model.hpp"
+#include "duet/model/interpreter.hpp"
 #include "duet/model/model_plant.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
+#include "duet/plant/balbot/balbot_plant.hpp"
+#include "duet/plant/balbot/balbot_scenario.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/plot/figure.hpp"
 
@@ -27,7 +32,53 @@ struct SimOptions {
   std::string plot;
   bool no_plot = false;
   std::uint64_t seed = 1;
+  bool seed_given = false;
+  std::string scenario;
+  std::vector<std::string> settings;  // NAME=VALUE or NAME=V1,V2,...
 };
+
+// A parameter's new value from the command line, as the model's parameter number and its elements.
+struct Setting {
+  std::size_t parameter = 0;
+  std::vector<double> values;
+};
+
+Result<std::vector<Setting>> parse_settings(const model::Model& model, const std::vector<std::string>& settings) {
+  std::vector<Setting> result;
+  for (const std::string& text : settings) {
+    const std::size_t equals = text.find('=');
+    const std::string name = text.substr(0, equals);
+    const auto found = std::find_if(model.parameters.begin(), model.parameters.end(),
+                                    [&name](const model::Parameter& parameter) { return parameter.name == name; });
+    if (equals == std::string::npos || found == model.parameters.end()) {
+      return Failure{"--parameter '" + text + "': " +
+                     (equals == std::string::npos ? std::string{"write NAME=VALUE"}
+                                                  : "the model has no parameter '" + name + "'")};
+    }
+    Setting setting{static_cast<std::size_t>(found - model.parameters.begin()), {}};
+    std::stringstream values{text.substr(equals + 1)};
+    for (std::string item; std::getline(values, item, ',');) {
+      std::size_t used = 0;
+      double value = 0;
+      try {
+        value = std::stod(item, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != item.size())
+        return Failure{"--parameter '" + text + "': '" + item + "' is not a number"};
+      setting.values.push_back(value);
+    }
+    const std::size_t elements = found->value.elements.size();
+    if (setting.values.size() != 1 && setting.values.size() != elements) {
+      return Failure{"--parameter '" + text + "': '" + name + "' has " + std::to_string(elements) +
+                     " elements: give one value for all, or one each"};
+    }
+    setting.values.resize(elements, setting.values.front());
+    result.push_back(std::move(setting));
+  }
+  return result;
+}
 
 bool write_file(const std::string& path, const std::string& text, Streams streams) {
   std::ofstream file{path};
@@ -39,8 +90,15 @@ bool write_file(const std::string& path, const std::string& text, Streams stream
 ExitCode run_sim(const SimOptions& options, Streams streams) {
   const auto checked = load_checked_model(options.file, streams.err);
   if (!checked) return ExitCode::failure;
-  // A plant by name, or a model file that is the plant.
+  // A plant by name, or a model file that is the plant; the robot with a scenario.
   auto plant = [&]() -> Result<std::unique_ptr<plant::Plant>> {
+    if (!options.scenario.empty()) {
+      if (options.plant != "balbot") return Failure{"--scenario is for --plant balbot"};
+      auto scenario = plant::load_balbot_scenario(options.scenario);
+      if (!scenario) return Failure{scenario.error()};
+      if (options.seed_given) scenario.value().seed = options.seed;
+      return std::unique_ptr<plant::Plant>{plant::make_balbot_plant(scenario.value())};
+    }
     if (!options.plant.ends_with(".yaml")) return plant::make_plant(options.plant, options.seed);
     auto loaded = model::ModelPlant::load(options.plant);
     if (!loaded) return Failure{loaded.error()};
@@ -51,7 +109,20 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
   }
-  auto simulated = model::simulate(checked->program, *plant.value(), {options.duration_s, options.signals, {}});
+  auto settings = parse_settings(*checked->model, options.settings);
+  if (!settings) {
+    streams.err << "duet sim: " << settings.error() << '\n';
+    return ExitCode::failure;
+  }
+  model::SimulationOptions simulation{options.duration_s, options.signals, {}};
+  simulation.before_tick = [&settings](std::uint64_t tick, model::Interpreter& model) {
+    if (tick != 0) return;
+    for (const Setting& setting : settings.value()) {
+      for (std::size_t k = 0; k < setting.values.size(); ++k)
+        model.set_parameter(setting.parameter, k, setting.values[k]);
+    }
+  };
+  auto simulated = model::simulate(checked->program, *plant.value(), simulation);
   if (!simulated) {
     streams.err << "duet sim: " << simulated.error() << '\n';
     return ExitCode::failure;
@@ -100,9 +171,18 @@ Action define_sim_command(CLI::App& command) {
   command.add_option("--csv", options->csv, "The CSV file to write (default: the model's name .csv)");
   command.add_option("--plot", options->plot, "The SVG plot to write (default: the model's name .svg)");
   command.add_flag("--no-plot", options->no_plot, "Write no plot");
-  command.add_option("--seed", options->seed, "Seed of the plant's noise: the same seed, the same run")
-      ->capture_default_str();
-  return [options](Streams streams) { return run_sim(*options, streams); };
+  auto* seed = command.add_option("--seed", options->seed, "Seed of the plant's noise: the same seed, the same run")
+                   ->capture_default_str();
+  command.add_option(
+      "-p,--parameter", options->settings,
+      "Tune a parameter from the start: NAME=VALUE, or NAME=V1,V2,... one per element (repeat for more)");
+  command.add_option("--scenario", options->scenario,
+                     "With --plant balbot: what happens to the robot (src/plant/balbot/README.md); --seed, if given, "
+                     "replaces its seed");
+  return [options, seed](Streams streams) {
+    options->seed_given = seed->count() > 0;
+    return run_sim(*options, streams);
+  };
 }
 
 }  // namespace duet::cli

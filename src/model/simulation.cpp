@@ -181,12 +181,19 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
       result.recording.units.push_back(info.unit);
     }
   }
-  result.recording.columns.resize(columns.size());
+  const std::vector<plant::Plant::Observable> observables =
+      options.record_plant ? plant.observables() : std::vector<plant::Plant::Observable>{};
+  for (const plant::Plant::Observable& observable : observables) {
+    result.recording.names.push_back("plant." + observable.name);
+    result.recording.units.push_back(observable.unit);
+  }
+  std::vector<double> observed(observables.size());
+  result.recording.columns.resize(columns.size() + observables.size());
   const double base_period_s = runner.base_period_s();
   const auto ticks = static_cast<std::uint64_t>(std::floor(options.duration_s / base_period_s + 1e-9)) + 1U;
   // The recording is kept in memory: refuse one that would not fit rather than run out of it.
   constexpr std::uint64_t most_values = 100'000'000;  // 800 MB of doubles
-  const std::uint64_t values = ticks * std::max<std::uint64_t>(columns.size() + 1, 1);
+  const std::uint64_t values = ticks * std::max<std::uint64_t>(columns.size() + observables.size() + 1, 1);
   if (ticks > most_values || values > most_values) {
     return Failure{"recording " + std::to_string(columns.size()) + " columns for " + std::to_string(ticks) +
                    " ticks is more than " + std::to_string(most_values) +
@@ -201,6 +208,11 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
     result.recording.time_s.push_back(now);
     for (std::size_t k = 0; k < columns.size(); ++k) {
       result.recording.columns[k].push_back(interpreter.signal(columns[k].signal, columns[k].element));
+    }
+    if (!observed.empty()) {
+      plant.observe(observed);
+      for (std::size_t k = 0; k < observed.size(); ++k)
+        result.recording.columns[columns.size() + k].push_back(observed[k]);
     }
   }
   result.ticks = ticks;

@@ -15,6 +15,7 @@
 #include "duet/hardware/hardware.hpp"
 #include "duet/blocks/average.hpp"
 #include "duet/blocks/bytes.hpp"
+#include "duet/blocks/state_space.hpp"
 #include "every_second.hpp"
 
 namespace balbot {
@@ -25,12 +26,14 @@ static_assert(offsetof(Parameters, D) == 8, "the A2L's layout");
 static_assert(offsetof(Parameters, N) == 12, "the A2L's layout");
 static_assert(offsetof(Parameters, target) == 16, "the A2L's layout");
 static_assert(offsetof(Parameters, stop_angle) == 20, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_A) == 24, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_C) == 40, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_G) == 56, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_Q) == 64, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_R) == 68, "the A2L's layout");
-static_assert(sizeof(Parameters) == 84);
+static_assert(offsetof(Parameters, use_lqr) == 24, "the A2L's layout");
+static_assert(offsetof(Parameters, K) == 28, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_A) == 44, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_C) == 60, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_G) == 76, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_Q) == 84, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_R) == 88, "the A2L's layout");
+static_assert(sizeof(Parameters) == 104);
 static_assert(offsetof(Signals, sensor_ready) == 0, "the A2L's layout");
 static_assert(offsetof(Signals, device_reset_bytes) == 1, "the A2L's layout");
 static_assert(offsetof(Signals, path_reset_bytes) == 3, "the A2L's layout");
@@ -51,24 +54,30 @@ static_assert(offsetof(Signals, estimate) == 52, "the A2L's layout");
 static_assert(offsetof(Signals, theta) == 60, "the A2L's layout");
 static_assert(offsetof(Signals, theta_rate) == 64, "the A2L's layout");
 static_assert(offsetof(Signals, error) == 68, "the A2L's layout");
-static_assert(offsetof(Signals, y) == 72, "the A2L's layout");
-static_assert(offsetof(Signals, stop) == 76, "the A2L's layout");
-static_assert(offsetof(Signals, standby_off) == 77, "the A2L's layout");
-static_assert(offsetof(Signals, left_in1) == 78, "the A2L's layout");
-static_assert(offsetof(Signals, left_in2) == 79, "the A2L's layout");
-static_assert(offsetof(Signals, duty_percent) == 80, "the A2L's layout");
-static_assert(offsetof(Signals, speed_left_captured) == 84, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_left) == 88, "the A2L's layout");
-static_assert(offsetof(Signals, speed_right_captured) == 92, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_right) == 96, "the A2L's layout");
-static_assert(offsetof(Signals, echo_captured) == 100, "the A2L's layout");
-static_assert(offsetof(Signals, distance) == 104, "the A2L's layout");
-static_assert(offsetof(Signals, adc_samples_received) == 108, "the A2L's layout");
-static_assert(offsetof(Signals, battery_voltage) == 308, "the A2L's layout");
-static_assert(offsetof(Signals, message) == 312, "the A2L's layout");
-static_assert(offsetof(Signals, gains_received) == 324, "the A2L's layout");
-static_assert(offsetof(Signals, linux_gains) == 336, "the A2L's layout");
-static_assert(sizeof(Signals) == 348);
+static_assert(offsetof(Signals, y_pid) == 72, "the A2L's layout");
+static_assert(offsetof(Signals, position) == 76, "the A2L's layout");
+static_assert(offsetof(Signals, speed) == 80, "the A2L's layout");
+static_assert(offsetof(Signals, y_lqr) == 84, "the A2L's layout");
+static_assert(offsetof(Signals, y) == 88, "the A2L's layout");
+static_assert(offsetof(Signals, stop) == 92, "the A2L's layout");
+static_assert(offsetof(Signals, standby_off) == 93, "the A2L's layout");
+static_assert(offsetof(Signals, left_in1) == 94, "the A2L's layout");
+static_assert(offsetof(Signals, left_in2) == 95, "the A2L's layout");
+static_assert(offsetof(Signals, duty_percent) == 96, "the A2L's layout");
+static_assert(offsetof(Signals, speed_left_captured) == 100, "the A2L's layout");
+static_assert(offsetof(Signals, travelled_left) == 104, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_left) == 108, "the A2L's layout");
+static_assert(offsetof(Signals, speed_right_captured) == 112, "the A2L's layout");
+static_assert(offsetof(Signals, travelled_right) == 116, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_right) == 120, "the A2L's layout");
+static_assert(offsetof(Signals, echo_captured) == 124, "the A2L's layout");
+static_assert(offsetof(Signals, distance) == 128, "the A2L's layout");
+static_assert(offsetof(Signals, adc_samples_received) == 132, "the A2L's layout");
+static_assert(offsetof(Signals, battery_voltage) == 332, "the A2L's layout");
+static_assert(offsetof(Signals, message) == 336, "the A2L's layout");
+static_assert(offsetof(Signals, gains_received) == 348, "the A2L's layout");
+static_assert(offsetof(Signals, linux_gains) == 360, "the A2L's layout");
+static_assert(sizeof(Signals) == 372);
 
 Parameters parameters{
     .P = 0.0196F,
@@ -77,6 +86,8 @@ Parameters parameters{
     .N = 28.234F,
     .target = 0.0F,
     .stop_angle = 60.0F,
+    .use_lqr = true,
+    .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
     .kalman_A = {1.0F, 0.001F, 0.0F, 1.0F},
     .kalman_C = {1.0F, 0.0F, 0.0F, 1.0F},
     .kalman_G = {0.001F, 1.0F},
@@ -90,6 +101,8 @@ const Parameters reference_parameters{
     .N = 28.234F,
     .target = 0.0F,
     .stop_angle = 60.0F,
+    .use_lqr = true,
+    .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
     .kalman_A = {1.0F, 0.001F, 0.0F, 1.0F},
     .kalman_C = {1.0F, 0.0F, 0.0F, 1.0F},
     .kalman_G = {0.001F, 1.0F},
@@ -152,9 +165,14 @@ void initialize() {
   state.filter_kalman.p[0] = 1.0F;
   state.filter_kalman.p[3] = 1.0F;
   state.controller = {0.0F, 0.0F};
+  state.velocity.filter = 0.0F;
   state.set_duty_latest.reset(0.0F);
+  state.hall_left_previous.state = 0.0F;
   state.left_to_step.reset(0.0F);
+  state.left_travel.reset(0.0F);
+  state.hall_right_previous.state = 0.0F;
   state.right_to_step.reset(0.0F);
+  state.right_travel.reset(0.0F);
   state.trigger_wave.k = 0;
   state.echo_every_second.second = false;
   state.echo_every_second.held = std::uint32_t{0};
@@ -247,7 +265,13 @@ void step_rate_1() {
   // compare (Sum)
   signals.error = duet::blocks::subtract(p.target, signals.theta);
   // controller (DiscretePid)
-  signals.y = state.controller.output(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F});
+  signals.y_pid = state.controller.output(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F});
+  // to_radians (Gain)
+  float theta_rad{};
+  theta_rad = duet::blocks::gain(signals.theta, 0.017453292F);
+  // rate_to_radians (Gain)
+  float theta_rate_rad{};
+  theta_rate_rad = duet::blocks::gain(signals.theta_rate, 0.017453292F);
   // tilt_size (Abs)
   float tilt_size{};
   tilt_size = duet::blocks::absolute(signals.theta);
@@ -263,15 +287,51 @@ void step_rate_1() {
   signals.standby_off = !duet::blocks::convert<bool>(signals.stop);
   // stby_pin (GpioOut)
   duet::hardware::gpio_write(stby_pin_pin, signals.standby_off);
+  // run (Not)
+  bool run{};
+  run = !duet::blocks::convert<bool>(signals.stop);
+  // left_to_step (RateTransition)
+  signals.wheel_speed_left = state.left_to_step.read();
+  // left_travel (RateTransition)
+  float position_left{};
+  position_left = state.left_travel.read();
+  // right_to_step (RateTransition)
+  float speed_right_motor{};
+  speed_right_motor = state.right_to_step.read();
+  // mirrored (Gain)
+  signals.wheel_speed_right = duet::blocks::gain(speed_right_motor, -1.0F);
+  // right_travel (RateTransition)
+  float travel_right_motor{};
+  travel_right_motor = state.right_travel.read();
+  // travel_mirrored (Gain)
+  float position_right{};
+  position_right = duet::blocks::gain(travel_right_motor, -1.0F);
+  // wheels (Sum)
+  float wheels_sum{};
+  wheels_sum = duet::blocks::add(position_left, position_right);
+  // halve (Gain)
+  signals.position = duet::blocks::gain(wheels_sum, 0.5F);
+  // velocity (FilteredDerivative)
+  signals.speed = state.velocity.output(signals.position, 1.0F, 20.0F);
+  // state (Mux)
+  float state_vector[4]{};
+  state_vector[0] = signals.position;
+  state_vector[1] = signals.speed;
+  state_vector[2] = theta_rad;
+  state_vector[3] = theta_rate_rad;
+  // feedback (StateFeedback)
+  duet::blocks::state_feedback(p.K, state_vector, 1, 4, &signals.y_lqr);
+  // choose (Switch)
+  float y_chosen{};
+  y_chosen = duet::blocks::select(duet::blocks::convert<bool>(p.use_lqr), signals.y_lqr, signals.y_pid);
+  // duty_limit (Saturation)
+  signals.y = duet::blocks::saturate(y_chosen, -1.0F, 1.0F);
   // direction (Compare)
   bool clockwise{};
   clockwise = duet::blocks::compare(duet::blocks::CompareOperator::greater, signals.y, 0.0F);
   // other_direction (Not)
   bool counter_clockwise{};
   counter_clockwise = !duet::blocks::convert<bool>(clockwise);
-  // run (Not)
-  bool run{};
-  run = !duet::blocks::convert<bool>(signals.stop);
   // in1 (Logic)
   signals.left_in1 = duet::blocks::logic<duet::blocks::LogicOperator::logical_and>(duet::blocks::convert<bool>(clockwise), duet::blocks::convert<bool>(run));
   // in2 (Logic)
@@ -289,13 +349,6 @@ void step_rate_1() {
   duty_size = duet::blocks::absolute(signals.y);
   // to_percent (Gain)
   signals.duty_percent = duet::blocks::gain(duty_size, 100.0F);
-  // left_to_step (RateTransition)
-  signals.wheel_speed_left = state.left_to_step.read();
-  // right_to_step (RateTransition)
-  float speed_right_motor{};
-  speed_right_motor = state.right_to_step.read();
-  // mirrored (Gain)
-  signals.wheel_speed_right = duet::blocks::gain(speed_right_motor, -1.0F);
   // trigger_wave (PulseGenerator)
   bool trigger{};
   trigger = duet::blocks::convert<bool>(duet::blocks::pulse(state.trigger_wave.output(), 100U, 50U, 0U, std::uint8_t{1}));
@@ -308,7 +361,7 @@ void step_rate_1() {
   float echo_us{};
   echo_us = duet::blocks::convert<float>(echo_length);
   // to_centimetres (Gain)
-  signals.distance = duet::blocks::gain(echo_us, 0.01724138F);
+  signals.distance = duet::blocks::gain(echo_us, 0.017F);
   // adc_wave (PulseGenerator)
   bool adc_clock{};
   adc_clock = duet::blocks::convert<bool>(duet::blocks::pulse(state.adc_wave.output(), 1000U, 500U, 0U, std::uint8_t{1}));
@@ -350,6 +403,7 @@ void step_rate_1() {
     state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q, p.kalman_R);
   }
   state.controller.update_clamped(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F}, 0.001F);
+  state.velocity.update(signals.position, 1.0F, 20.0F, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();
   state.adc_wave.update();
@@ -600,7 +654,17 @@ void task_TIM2() {
   hall_left_sign = duet::blocks::select(duet::blocks::convert<bool>(hall_left_b_high), -1.0F, 1.0F);
   // hall_left/signed (Product)
   signals.speed_left_captured = duet::blocks::multiply(hall_left_magnitude, hall_left_sign);
+  // hall_left/step (Product)
+  float hall_left_step{};
+  hall_left_step = duet::blocks::multiply(0.00043284F, hall_left_sign);
+  // hall_left/previous (UnitDelay)
+  float hall_left_before{};
+  hall_left_before = state.hall_left_previous.output();
+  // hall_left/accumulate (Sum)
+  signals.travelled_left = duet::blocks::add(hall_left_before, hall_left_step);
+  state.hall_left_previous.update(signals.travelled_left);
   state.left_to_step.write(signals.speed_left_captured);
+  state.left_travel.write(signals.travelled_left);
 }
 
 void task_TIM4() {
@@ -628,7 +692,17 @@ void task_TIM4() {
   hall_right_sign = duet::blocks::select(duet::blocks::convert<bool>(hall_right_b_high), -1.0F, 1.0F);
   // hall_right/signed (Product)
   signals.speed_right_captured = duet::blocks::multiply(hall_right_magnitude, hall_right_sign);
+  // hall_right/step (Product)
+  float hall_right_step{};
+  hall_right_step = duet::blocks::multiply(0.00043284F, hall_right_sign);
+  // hall_right/previous (UnitDelay)
+  float hall_right_before{};
+  hall_right_before = state.hall_right_previous.output();
+  // hall_right/accumulate (Sum)
+  signals.travelled_right = duet::blocks::add(hall_right_before, hall_right_step);
+  state.hall_right_previous.update(signals.travelled_right);
   state.right_to_step.write(signals.speed_right_captured);
+  state.right_travel.write(signals.travelled_right);
 }
 
 void task_TIM5() {

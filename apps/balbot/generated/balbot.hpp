@@ -35,6 +35,8 @@ struct Parameters {
   float N;
   float target;
   float stop_angle;
+  bool use_lqr;
+  float K[4];
   float kalman_A[4];
   float kalman_C[4];
   float kalman_G[2];
@@ -64,6 +66,10 @@ struct Signals {
   float theta;
   float theta_rate;
   float error;
+  float y_pid;
+  float position;
+  float speed;
+  float y_lqr;
   float y;
   bool stop;
   bool standby_off;
@@ -71,8 +77,10 @@ struct Signals {
   bool left_in2;
   float duty_percent;
   float speed_left_captured;
+  float travelled_left;
   float wheel_speed_left;
   float speed_right_captured;
+  float travelled_right;
   float wheel_speed_right;
   std::uint32_t echo_captured;
   float distance;
@@ -119,9 +127,14 @@ struct State {
   duet::rt::AsyncTransfer<std::array<std::uint8_t, 15>> mpu_bytes_to_step;
   duet::blocks::KalmanFilter<float, 2, 2, 1> filter_kalman;
   duet::blocks::DiscretePid<float> controller;
+  duet::blocks::FilteredDerivative<float> velocity;
   duet::rt::AsyncTransfer<float> set_duty_latest;
+  duet::blocks::UnitDelay<float> hall_left_previous;
   duet::rt::AsyncTransfer<float> left_to_step;
+  duet::rt::AsyncTransfer<float> left_travel;
+  duet::blocks::UnitDelay<float> hall_right_previous;
   duet::rt::AsyncTransfer<float> right_to_step;
+  duet::rt::AsyncTransfer<float> right_travel;
   duet::blocks::StepCounter trigger_wave;
   code::echo_every_second::State echo_every_second;
   duet::rt::AsyncTransfer<std::uint32_t> echo_to_step;

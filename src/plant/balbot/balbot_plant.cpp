@@ -163,6 +163,37 @@ std::span<const std::uint8_t> BalbotPlant::message_to_linux() const { return sim
 const std::vector<std::string>& BalbotPlant::unknown_resources() const { return simulation_->unknown_resources(); }
 std::uint64_t BalbotPlant::refused_spi_transactions() const { return simulation_->refused_spi_transactions(); }
 
+namespace {
+
+// A truth column's unit, from its name's ending.
+std::string unit_of(std::string_view name) {
+  constexpr std::pair<std::string_view, std::string_view> endings[] = {
+      {"_deg_s", "deg/s"}, {"_deg", "deg"}, {"_m_s", "m/s"}, {"_rev_s", "rev/s"},
+      {"_m", "m"},         {"_v", "V"},     {"_a", "A"},     {"_n", "N"}};
+  for (const auto& [ending, unit] : endings) {
+    if (name.ends_with(ending)) return std::string{unit};
+  }
+  return {};
+}
+
+}  // namespace
+
+std::vector<Plant::Observable> BalbotPlant::observables() const {
+  std::vector<Observable> result;
+  for (const std::string_view name : BalbotTruth::names()) {
+    if (name != "time_s") result.push_back({std::string{name}, unit_of(name)});
+  }
+  return result;
+}
+
+void BalbotPlant::observe(std::span<double> values) const {
+  const auto all = truth().values();
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < BalbotTruth::count && at < values.size(); ++k) {
+    if (BalbotTruth::names()[k] != "time_s") values[at++] = all[k];
+  }
+}
+
 std::unique_ptr<BalbotPlant> make_balbot_plant(std::uint64_t seed) {
   BalbotScenario scenario;
   scenario.seed = seed;

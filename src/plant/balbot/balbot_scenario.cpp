@@ -194,7 +194,8 @@ Problem rig(const ScenarioReader& reader, const YAML::Node& node, BalbotRig& out
 Problem read(const ScenarioReader& reader, const YAML::Node& root, BalbotScenario& s) {
   if (!root || root.IsNull()) return std::nullopt;
   if (!root.IsMap()) return reader.at(root, "expected a map of scenario keys");
-  static constexpr std::array<std::string_view, 11> keys{"initial_tilt_deg",
+  static constexpr std::array<std::string_view, 12> keys{"initial_tilt_deg",
+                                                         "release_time_s",
                                                          "pushes",
                                                          "duty_disturbances",
                                                          "noise",
@@ -212,6 +213,7 @@ Problem read(const ScenarioReader& reader, const YAML::Node& root, BalbotScenari
   };
   constexpr std::uint64_t any = std::numeric_limits<std::uint64_t>::max();
   if (Problem problem = number("initial_tilt_deg", -89, 89, s.initial_tilt_deg)) return problem;
+  if (Problem problem = number("release_time_s", 0, unbounded, s.release_time_s)) return problem;
   if (Problem problem = number("battery_v", 0.1, 12.6, s.battery_v)) return problem;
   if (Problem problem = number("wall_distance_m", -unbounded, unbounded, s.wall_distance_m)) return problem;
   if (Problem problem = number("sensor_mount_height_m", 0, 0.5, s.sensor_mount_height_m)) return problem;

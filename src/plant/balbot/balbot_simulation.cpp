@@ -24,7 +24,8 @@ std::uint8_t byte_of(double value) { return value >= 0 && value <= 255 ? static_
 
 bool same(const balbot::Drive& a, const balbot::Drive& b) {
   return a.left.connected == b.left.connected && a.left.drive == b.left.drive &&
-         a.right.connected == b.right.connected && a.right.drive == b.right.drive && a.push_force_n == b.push_force_n;
+         a.right.connected == b.right.connected && a.right.drive == b.right.drive && a.push_force_n == b.push_force_n &&
+         a.held == b.held;
 }
 
 MechanicalState initial_state(const BalbotScenario& scenario, const BalbotParameters& parameters) {
@@ -59,6 +60,10 @@ BalbotSimulation::BalbotSimulation(const BalbotScenario& scenario, const BalbotP
   }
   for (const BalbotDutyDisturbance& pulse : scenario.duty_disturbances) {
     disturbances_.push_back({nanoseconds(pulse.time_s), nanoseconds(pulse.time_s + pulse.duration_s), pulse.duty});
+  }
+  if (scenario.rig == BalbotRig::on_ground && scenario.release_time_s > 0) {
+    release_time_ = nanoseconds(scenario.release_time_s);
+    scenario_changes_.push_back(release_time_);
   }
   for (const std::vector<Pulse>* pulses : {&pushes_, &disturbances_}) {
     for (const Pulse& pulse : *pulses) {
@@ -270,7 +275,7 @@ void BalbotSimulation::update_drive(bool left, bool right) {
   if (right) {
     right_output_ = balbot::tb6612fng(inputs(Pin::right_in1, Pin::right_in2, Motor::right), disturbance_, false);
   }
-  const balbot::Drive next{left_output_.drive, right_output_.drive, push_force_};
+  const balbot::Drive next{left_output_.drive, right_output_.drive, push_force_, now_ < release_time_};
   if (same(next, drive_)) return;
   if (segment_valid_) convert_until(now_, false);  // the segment ends here
   for (balbot::HallEncoder& hall : halls_) hall.apply_before(now_);

@@ -120,6 +120,7 @@ class BalbotSimulation {
   balbot::DriverOutputs left_output_;
   balbot::DriverOutputs right_output_;
   double push_force_ = 0;
+  Nanoseconds release_time_ = 0;  // held still before
   double disturbance_ = 0;
   mutable balbot::Drive drive_;
   std::vector<Pulse> pushes_;

@@ -66,6 +66,7 @@ Drive Mechanics::prepared(Drive drive) const {
 
 Derivative Mechanics::derivative(const MechanicalState& s, const Drive& drive) const {
   Derivative d{.v = s.v, .omega = s.omega};
+  if (drive.held) return {};  // at rest, and kept there
   switch (rig_) {
     case BalbotRig::wheels_driven: return d;
     case BalbotRig::held_in_air:

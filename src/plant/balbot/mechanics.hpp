@@ -33,6 +33,7 @@ struct Drive {
   MotorDrive left;
   MotorDrive right;
   double push_force_n = 0;  // horizontal, at the centre of mass
+  bool held = false;        // held still by hand: nothing moves
   // For a given drive the wheel torque is linear in the wheels' rate: Mechanics::prepared() works out the line once.
   double torque_at_rest = 0;   // N m
   double torque_per_rate = 0;  // N m per rad/s

@@ -28,6 +28,8 @@ struct SimulationOptions {
   std::vector<std::string> signals;
   // Called before each base tick, before the plant moves: where a test or a master tunes parameters.
   std::function<void(std::uint64_t tick, Interpreter& model)> before_tick;
+  // Also record what the plant shows of itself (Plant::observables), as columns "plant.NAME" after the model's.
+  bool record_plant = true;
 };
 
 // One column per element of a recorded signal ("theta", or "x[0]", "x[1]" for a vector), one row per base tick:

@@ -32,6 +32,15 @@ class Plant {
   virtual void write(std::string_view resource, std::span<const double> values) = 0;
   // The model reads an input resource (a sensor); the plant fills every element.
   virtual void read(std::string_view resource, std::span<double> values) = 0;
+
+  // What the plant shows of itself beside the model's signals (a simulation records them as columns "plant.NAME"):
+  // names with their units, and the values now, in that order. Nothing unless a plant says.
+  struct Observable {
+    std::string name;
+    std::string unit;
+  };
+  [[nodiscard]] virtual std::vector<Observable> observables() const { return {}; }
+  virtual void observe(std::span<double> values) const { (void)values; }
 };
 
 // A plant that holds the last value written to each resource and reads back whatever was written to it (zeros for a

@@ -32,6 +32,9 @@ class BalbotPlant final : public Plant {
   void advance(double time_s, const RaiseInterrupt& raise) override;
   void write(std::string_view resource, std::span<const double> values) override;
   void read(std::string_view resource, std::span<double> values) override;
+  // The truth's values (BalbotTruth::names()), but time.
+  [[nodiscard]] std::vector<Observable> observables() const override;
+  void observe(std::span<double> values) const override;
 
   // The state now (inside an interrupt task: at the interrupt's instant).
   [[nodiscard]] BalbotTruth truth() const;

@@ -37,6 +37,9 @@ struct BalbotIpcMessage {  // bytes the Linux side sends at time_s (at most 496,
 
 struct BalbotScenario {
   double initial_tilt_deg = 5;  // theta at time 0; positive: the body behind the axle
+  // Until then the robot is held still at the initial tilt, wheels on the ground (as one holds it while it starts
+  // up); on_ground only.
+  double release_time_s = 0;
   std::vector<BalbotPush> pushes;
   std::vector<BalbotDutyDisturbance> duty_disturbances;
   bool noise = true;  // sensor noise on the MPU6500 and the battery ADC
