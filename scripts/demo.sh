@@ -2,6 +2,7 @@
 # The main demonstration: installs what is missing, builds, and shows the most end-to-end thing duet does so far.
 # Today: the duet program on the PC, the self-test firmware and the executive's step-time test on an emulated
 # Cortex-M4 (QEMU mps2-an386), a controller model simulated on the PC and its generated code on the emulated Cortex-M4,
+# the self-balancing robot balancing the simulated robot on the PC,
 # and the Linux-side bridge built for the Cortex-A7 and run under qemu-arm. Later issues grow it into the closed loop.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -55,11 +56,20 @@ cmake -DQEMU=qemu-system-arm -DIMAGE=build/m4-qemu/apps/pid_demo/pid-demo-model.
 echo "demo: the generated code ended where the simulation ended, bit for bit; plot: build/demo/pid_demo.svg"
 
 echo
-echo "== 5. The Linux-side bridge for the Cortex-A7 (armhf, static), run under qemu-arm"
+echo "== 5. The self-balancing robot (apps/balbot) balancing the simulated robot for a minute, then the thesis' PD gains"
+$duet sim apps/balbot/balbot.yaml --plant balbot --scenario apps/balbot/scenarios/disturbed.yaml --duration 60 \
+  --csv build/demo/balbot.csv --plot build/demo/balbot.svg
+$duet sim apps/balbot/balbot.yaml --plant balbot --scenario apps/balbot/scenarios/release.yaml -p use_lqr=0 \
+  --duration 5 --csv build/demo/balbot_pd.csv --plot build/demo/balbot_pd.svg
+echo "demo: held at 5 degrees until 2 s, then balanced by LQR state feedback through a push at 20 s; with the thesis'"
+echo "      PD gains instead it falls (apps/balbot/README.md says why). Plots: build/demo/balbot.svg, balbot_pd.svg"
+
+echo
+echo "== 6. The Linux-side bridge for the Cortex-A7 (armhf, static), run under qemu-arm"
 qemu-arm-static "$bridge" --version
 
 echo
 echo "demo: done. Built the duet program, the Cortex-M4 images and the armhf bridge; the self-test passed on the"
 echo "      emulated Cortex-M4, the executive met the step-time target (10 us) there, a model was simulated on the PC"
-echo "      and its generated code ran on the emulated Cortex-M4 to the same values, and the bridge ran as an armhf"
-echo "      program. Run every test: scripts/test.sh"
+echo "      and its generated code ran on the emulated Cortex-M4 to the same values, the robot model balanced the"
+echo "      simulated robot, and the bridge ran as an armhf program. Run every test: scripts/test.sh"
