@@ -7,6 +7,7 @@
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/plant/balbot/balbot_plant.hpp"
+#include "sil_run.hpp"
 
 namespace {
 
@@ -66,5 +67,23 @@ void simulate_balbot_minute(benchmark::State& state) {
       benchmark::Counter(static_cast<double>(state.iterations()) * seconds, benchmark::Counter::kIsRate);
 }
 BENCHMARK(simulate_balbot_minute)->Unit(benchmark::kMillisecond);
+
+// The same minute with the robot's generated firmware built for the PC (apps/balbot/sil_run.hpp, as balbot_sil
+// --plant balbot runs it): the firmware's steps on the lock-step executive, the simulated robot in the same process.
+void firmware_balbot_minute(benchmark::State& state) {
+  constexpr double seconds = 60.0;
+  for (auto _ : state) {
+    duet::plant::BalbotScenario scenario;
+    scenario.release_time_s = 2;
+    const auto plant = duet::plant::make_balbot_plant(scenario);
+    duet::sil::SilOptions options;
+    options.duration_s = seconds;
+    auto result = duet::sil::run_sil(*plant, options);
+    benchmark::DoNotOptimize(result.value().ticks);
+  }
+  state.counters["times_real_time"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * seconds, benchmark::Counter::kIsRate);
+}
+BENCHMARK(firmware_balbot_minute)->Unit(benchmark::kMillisecond);
 
 }  // namespace

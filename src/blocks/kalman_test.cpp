@@ -15,13 +15,15 @@ namespace {
 
 static_assert(std::is_aggregate_v<KalmanFilter<float, 2, 2, 1>> &&
               std::is_aggregate_v<SteadyStateKalmanFilter<float, 2, 1>>);
-static_assert(sizeof(KalmanFilter<double, 2, 2, 1>) == 6 * sizeof(double));
+static_assert(sizeof(KalmanFilter<double, 2, 2, 1>) == 10 * sizeof(double));  // x, P and the step's K
 
 constexpr double scalar_estimate_after_two_steps() {
   KalmanFilter<double, 1, 1, 1> filter{{0.0}, {1.0}};
   const double one[] = {1.0};
   const double y[] = {2.0};
-  filter.update(y, one, one, one, one, one);
+  double first[1] = {};
+  filter.output(y, one, one, first);  // K of the step, for update()
+  filter.update(y, one, one, one, one);
   double estimate[1] = {};
   filter.output(y, one, one, estimate);
   return estimate[0];
@@ -43,7 +45,7 @@ TEST(BlocksKalmanFilter, ScalarByHand) {
     std::array<double, 1> estimate{};
     filter.output(y.data(), one.data(), one.data(), estimate.data());
     EXPECT_DOUBLE_EQ(estimate[0], expected_estimates[k]) << k;
-    filter.update(y.data(), one.data(), one.data(), one.data(), one.data(), one.data());
+    filter.update(y.data(), one.data(), one.data(), one.data(), one.data());
     EXPECT_DOUBLE_EQ(filter.x[0], expected_estimates[k]) << k;  // A = 1: the prediction is the estimate
     EXPECT_DOUBLE_EQ(filter.p[0], expected_covariances[k]) << k;
   }
@@ -54,7 +56,7 @@ TEST(BlocksKalmanFilter, ScalarByHand) {
   std::array<float, 1> estimate_f{};
   in_float.output(y_f.data(), one_f.data(), one_f.data(), estimate_f.data());
   EXPECT_EQ(estimate_f[0], 1.0F);
-  in_float.update(y_f.data(), one_f.data(), one_f.data(), one_f.data(), one_f.data(), one_f.data());
+  in_float.update(y_f.data(), one_f.data(), one_f.data(), one_f.data(), one_f.data());
   EXPECT_EQ(in_float.p[0], 1.5F);
 }
 
@@ -71,7 +73,7 @@ TEST(BlocksKalmanFilter, SingularInnovationCovarianceLetsThePredictionThrough) {
   std::array<double, 1> estimate{};
   filter.output(y.data(), c.data(), r.data(), estimate.data());
   EXPECT_EQ(estimate[0], 3.0);
-  filter.update(y.data(), a.data(), c.data(), g.data(), q.data(), r.data());
+  filter.update(y.data(), a.data(), c.data(), g.data(), q.data());
   EXPECT_EQ(filter.x[0], 6.0);
   EXPECT_EQ(filter.p[0], 0.5);
 }
@@ -83,7 +85,9 @@ TEST(BlocksKalmanFilter, InputThroughB) {
   const std::array<double, 1> y{2.0};
   const std::array<double, 1> b{4.0};
   const std::array<double, 1> u{0.25};
-  filter.update(y.data(), u.data(), 1, one.data(), b.data(), one.data(), one.data(), one.data(), one.data());
+  std::array<double, 1> estimate{};
+  filter.output(y.data(), one.data(), one.data(), estimate.data());
+  filter.update(y.data(), u.data(), 1, one.data(), b.data(), one.data(), one.data(), one.data());
   EXPECT_EQ(filter.x[0], 2.0);
   EXPECT_EQ(filter.p[0], 1.5);
 }
@@ -206,7 +210,7 @@ ThesisRun run_thesis_filter(std::size_t steps) {
     const std::array<T, 2> y{static_cast<T>(measurements[k][0]), static_cast<T>(measurements[k][1])};
     std::array<T, 2> estimate{};
     filter.output(y.data(), m.c.data(), m.r.data(), estimate.data());
-    filter.update(y.data(), m.a.data(), m.c.data(), m.g.data(), m.q.data(), m.r.data());
+    filter.update(y.data(), m.a.data(), m.c.data(), m.g.data(), m.q.data());
     reference.step(static_cast<double>(y[0]), static_cast<double>(y[1]));
     const auto relative = [](double value, double expected, double floor) {
       return std::abs(value - expected) / (floor + std::abs(expected));

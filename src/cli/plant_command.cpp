@@ -4,16 +4,20 @@
 
 #include <chrono>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "duet/link/serve.hpp"
 #include "duet/link/tcp.hpp"
+#include "duet/model/simulation.hpp"
 #include "duet/plant/balbot/balbot_plant.hpp"
 #include "duet/plant/balbot/balbot_scenario.hpp"
 #include "duet/plant/plant.hpp"
+#include "duet/plot/figure.hpp"
 
 namespace duet::cli {
 namespace {
@@ -26,6 +30,53 @@ struct ServeOptions {
   std::string listen = "127.0.0.1:" + std::to_string(link::default_port);
   bool once = false;
   double timeout_s = 10;
+  std::string csv;   // the plant's observables, a row per TICK, written when a session ends
+  std::string plot;  // the same as an SVG plot
+};
+
+// A plant that records what the plant behind it shows of itself (Plant::observables) once per TICK, after it
+// advanced: the plant's own view of a session, whatever the firmware measures. Without `record` it only passes the
+// calls on.
+class RecordingPlant : public plant::Plant {
+ public:
+  RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record)
+      : behind_(std::move(behind)), record_(record), observables_(behind_->observables()), now_(observables_.size()) {
+    for (const Observable& observable : observables_) {
+      recording_.names.push_back(observable.name);
+      recording_.units.push_back(observable.unit);
+    }
+    recording_.columns.resize(observables_.size());
+  }
+
+  void advance(double time_s, const plant::RaiseInterrupt& raise) override {
+    behind_->advance(time_s, raise);
+    if (!record_) return;
+    if (recording_.time_s.size() >= most_rows_) {
+      truncated_ = true;
+      return;
+    }
+    behind_->observe(now_);
+    recording_.time_s.push_back(time_s);
+    for (std::size_t k = 0; k < now_.size(); ++k) recording_.columns[k].push_back(now_[k]);
+  }
+  void write(std::string_view resource, std::span<const double> values) override { behind_->write(resource, values); }
+  void read(std::string_view resource, std::span<double> values) override { behind_->read(resource, values); }
+  [[nodiscard]] std::vector<Observable> observables() const override { return observables_; }
+  void observe(std::span<double> values) const override { behind_->observe(values); }
+
+  [[nodiscard]] const model::Recording& recording() const { return recording_; }
+  // Whether the session went on past what is kept in memory (the recording then holds its beginning).
+  [[nodiscard]] bool truncated() const { return truncated_; }
+
+ private:
+  std::unique_ptr<plant::Plant> behind_;
+  bool record_;
+  std::vector<Observable> observables_;
+  std::vector<double> now_;
+  model::Recording recording_;
+  // A session in real time may run for hours: keep at most 100 million values (800 MB), as duet sim does.
+  std::size_t most_rows_ = 100'000'000 / (observables_.size() + 1);
+  bool truncated_ = false;
 };
 
 using PlantMaker = std::function<std::unique_ptr<plant::Plant>()>;
@@ -58,13 +109,49 @@ std::string describe(const link::ServeSummary& summary) {
          std::to_string(summary.hello.base_period_ns / 1000) + " us)" + (summary.said_bye ? "" : ", ended without BYE");
 }
 
+constexpr std::string_view prefix = "duet plant serve: ";
+
+// Whether `path` can be written (it is created, empty): checked before listening rather than after a session.
+bool writable(const std::string& path, Streams streams) {
+  if (path.empty()) return true;
+  const std::ofstream file{path};
+  if (!file) streams.err << prefix << "cannot write " << path << '\n';
+  return static_cast<bool>(file);
+}
+
+bool write_file(const std::string& path, const std::string& text, Streams streams) {
+  std::ofstream file{path};
+  file << text;
+  file.close();
+  if (!file) streams.err << prefix << "cannot write " << path << '\n';
+  return static_cast<bool>(file);
+}
+
+// The session's recording, as --csv and --plot ask.
+bool write_recording(const ServeOptions& options, const RecordingPlant& plant, const std::string& peer,
+                     Streams streams) {
+  const model::Recording& recording = plant.recording();
+  if (plant.truncated()) {
+    streams.err << prefix << peer << ": the recording holds the first " << recording.time_s.size() << " ticks only\n";
+  }
+  bool written = true;
+  if (!options.csv.empty()) written = write_file(options.csv, model::to_csv(recording), streams) && written;
+  if (!options.plot.empty()) {
+    plot::Figure figure{"plant " + options.name + ", served to " + peer, "s", recording.time_s, {}};
+    for (std::size_t k = 0; k < recording.names.size(); ++k)
+      figure.series.push_back({recording.names[k], recording.units[k], recording.columns[k]});
+    written = write_file(options.plot, plot::to_svg(figure), streams) && written;
+  }
+  return written;
+}
+
 ExitCode serve_plant(const ServeOptions& options, Streams streams) {
-  constexpr std::string_view prefix = "duet plant serve: ";
   auto maker = plant_maker(options);
   if (!maker) {
     streams.err << prefix << maker.error() << '\n';
     return ExitCode::failure;
   }
+  if (!writable(options.csv, streams) || !writable(options.plot, streams)) return ExitCode::failure;
   auto address = link::parse_host_port(options.listen);  // checked by the option's validator already
   if (!address) {
     streams.err << prefix << address.error() << '\n';
@@ -86,14 +173,16 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
       streams.err << prefix << accepted.error() << '\n';
       return ExitCode::failure;
     }
-    const std::unique_ptr<plant::Plant> plant = maker.value()();
-    auto served = link::serve(*plant, *accepted.value().stream);
+    RecordingPlant plant{maker.value()(), !options.csv.empty() || !options.plot.empty()};
+    auto served = link::serve(plant, *accepted.value().stream);
     if (served) {
       streams.out << "served " << accepted.value().peer << ": " << describe(served.value()) << std::endl;
     } else {
       streams.err << prefix << accepted.value().peer << ": " << served.error() << std::endl;
     }
-    if (options.once) return served ? ExitCode::success : ExitCode::failure;
+    // Written for a failed session too: how it went up to the failure is what one wants to look at.
+    const bool written = write_recording(options, plant, accepted.value().peer, streams);
+    if (options.once) return served && written ? ExitCode::success : ExitCode::failure;
   }
 }
 
@@ -140,6 +229,11 @@ Action define_plant_command(CLI::App& command) {
       ->capture_default_str()
       ->type_name("S")
       ->check(CLI::Range(0.0, 1e6));
+  serve
+      ->add_option("--csv", options->csv,
+                   "Write the plant's own quantities, a row per TICK, to FILE when a session ends (the last session's)")
+      ->type_name("FILE");
+  serve->add_option("--plot", options->plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
   return [options](Streams streams) { return serve_plant(*options, streams); };
 }
 

@@ -16,6 +16,8 @@
 #include "duet/link/remote_plant.hpp"
 #include "duet/link/stream.hpp"
 #include "duet/link/tcp.hpp"
+#include "duet/plot/csv.hpp"
+#include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
@@ -49,6 +51,10 @@ TEST(PlantCommand, BadCommandLinesSayWhatIsWrong) {
   const Outcome scenario_for_none = run({"plant", "serve", "none", "--scenario", "robot.yaml"});
   EXPECT_EQ(scenario_for_none.exit_code, ExitCode::failure);
   EXPECT_EQ(scenario_for_none.err, "duet plant serve: --scenario is for the balbot plant; plant 'none' takes none\n");
+
+  const Outcome unwritable = run({"plant", "serve", "none", "--csv", "/nonexistent/plant.csv"});
+  EXPECT_EQ(unwritable.exit_code, ExitCode::failure);
+  EXPECT_EQ(unwritable.err, "duet plant serve: cannot write /nonexistent/plant.csv\n");
 
   const Outcome missing_scenario = run({"plant", "serve", "balbot", "--scenario", "/nonexistent/robot.yaml"});
   EXPECT_EQ(missing_scenario.exit_code, ExitCode::failure);
@@ -171,6 +177,49 @@ TEST(PlantCommand, TheRobotOfAScenario) {
   EXPECT_NE(served.find(": 20 ticks, "), std::string::npos) << served;
   EXPECT_EQ(program.wait(), 0);
   std::filesystem::remove(scenario);
+}
+
+TEST(PlantCommand, TheRobotsOwnQuantitiesATickAfterATickAsCsvAndPlot) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path();
+  const std::string stem = "duet_plant_record_" + std::to_string(::getpid());
+  const std::filesystem::path scenario = folder / (stem + ".yaml");
+  const std::filesystem::path csv = folder / (stem + ".csv");
+  const std::filesystem::path svg = folder / (stem + ".svg");
+  std::ofstream{scenario} << "initial_tilt_deg: 3\nrelease_time_s: 1\nnoise: false\n";
+  Child program{{"plant", "serve", "balbot", "--scenario", scenario.string(), "--listen", ":0", "--once", "--csv",
+                 csv.string(), "--plot", svg.string()}};
+  ASSERT_TRUE(program.started());
+  auto stream = link::connect_tcp(listening_address(program, "balbot"), 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.001});
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  for (int tick = 0; tick < 30; ++tick) connected.value()->advance(tick * 0.001, [](std::string_view) {});
+  EXPECT_TRUE(connected.value()->close().ok());
+  EXPECT_NE(program.line().find(": 30 ticks, "), std::string::npos);
+  EXPECT_EQ(program.wait(), 0);
+
+  auto text = read_text_file(csv.string());
+  ASSERT_TRUE(text.ok()) << text.error();
+  EXPECT_TRUE(text.value().starts_with("time_s,theta_deg,theta_dot_deg_s,x_m,")) << text.value().substr(0, 100);
+  auto recorded = plot::read_csv(text.value(), csv.string());
+  ASSERT_TRUE(recorded.ok()) << recorded.error();
+  ASSERT_EQ(recorded.value().time.size(), 30U);  // a row per TICK, at the TICK's time
+  EXPECT_EQ(recorded.value().time[29], 29 * 0.001);
+  const auto& series = recorded.value().series;
+  const auto theta =
+      std::find_if(series.begin(), series.end(), [](const auto& one) { return one.name == "theta_deg"; });
+  ASSERT_NE(theta, series.end());
+  EXPECT_EQ(theta->values.front(), 3.0);  // held at the scenario's tilt
+  for (const char* name : {"left_drive", "wheel_rev_s", "wall_distance_m", "battery_v"}) {
+    EXPECT_NE(std::find_if(series.begin(), series.end(), [name](const auto& one) { return one.name == name; }),
+              series.end())
+        << name;
+  }
+  auto plot = read_text_file(svg.string());
+  ASSERT_TRUE(plot.ok()) << plot.error();
+  EXPECT_NE(plot.value().find("<svg"), std::string::npos);
+  EXPECT_NE(plot.value().find("theta_deg"), std::string::npos);
+  for (const auto& path : {scenario, csv, svg}) std::filesystem::remove(path);
 }
 
 TEST(PlantCommand, AFirmwareThatBreaksTheLinkFailsTheSession) {

@@ -713,8 +713,7 @@ std::string Generator::sized_state_update(const ProgramBlock& block) const {
            ", " + array_argument(block, "gain", t) + ");\n";
   }
   return "  " + name + ".update(" + u + ", " + array_argument(block, "a", t) + ", " + array_argument(block, "c", t) +
-         ", " + array_argument(block, "g", t) + ", " + array_argument(block, "q", t) + ", " +
-         array_argument(block, "r", t) + ");\n";
+         ", " + array_argument(block, "g", t) + ", " + array_argument(block, "q", t) + ");\n";
 }
 
 // A Code block: its inputs and parameters copied into its structures, the function called with them and its state,

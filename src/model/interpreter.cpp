@@ -331,13 +331,14 @@ Compiled sized(Compiler& c, const ProgramBlock& block) {
   const bool covariance_given = block.argument("covariance") != nullptr;
   const Operand<T> covariance = c.argument<T>(block, "covariance", 0);
   auto scratch = std::make_shared<std::vector<T>>(blocks::detail::kalman_scratch_size(nx, n_in, nw));
-  return {{[x, p, y, u, cm, r, n_in, scratch, data] {
-             blocks::detail::kalman_output(x->data(), p->data(), x->size(), n_in, data(u), data(cm), data(r), y,
-                                           scratch->data());
+  auto gain = std::make_shared<std::vector<T>>(nx * n_in);  // K of the step, from output to update
+  return {{[x, p, y, u, cm, r, n_in, gain, scratch, data] {
+             blocks::detail::kalman_output(x->data(), p->data(), x->size(), n_in, data(u), data(cm), data(r),
+                                           gain->data(), y, scratch->data());
            },
-           [x, p, u, a, cm, g, q, r, n_in, nw, scratch, data] {
+           [x, p, u, a, cm, g, q, n_in, nw, gain, scratch, data] {
              blocks::detail::kalman_update(x->data(), p->data(), x->size(), n_in, nw, data(u), no_input, 0, data(a),
-                                           no_input, data(cm), data(g), data(q), data(r), scratch->data());
+                                           no_input, data(cm), data(g), data(q), gain->data(), scratch->data());
            }},
           [reset_x, p, nx, covariance_given, covariance] {
             reset_x();

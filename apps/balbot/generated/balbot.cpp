@@ -74,10 +74,9 @@ static_assert(offsetof(Signals, echo_captured) == 124, "the A2L's layout");
 static_assert(offsetof(Signals, distance) == 128, "the A2L's layout");
 static_assert(offsetof(Signals, adc_samples_received) == 132, "the A2L's layout");
 static_assert(offsetof(Signals, battery_voltage) == 332, "the A2L's layout");
-static_assert(offsetof(Signals, message) == 336, "the A2L's layout");
-static_assert(offsetof(Signals, gains_received) == 348, "the A2L's layout");
-static_assert(offsetof(Signals, linux_gains) == 360, "the A2L's layout");
-static_assert(sizeof(Signals) == 372);
+static_assert(offsetof(Signals, gains_received) == 336, "the A2L's layout");
+static_assert(offsetof(Signals, linux_gains) == 348, "the A2L's layout");
+static_assert(sizeof(Signals) == 360);
 
 Parameters parameters{
     .P = 0.0196F,
@@ -180,7 +179,8 @@ void initialize() {
   state.adc_wave.k = 0;
   state.adc_request_trigger_edge.previous = false;
   state.samples_to_step.reset({std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}});
-  state.message_to_ipc.reset({std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}});
+  state.theta_to_ipc.reset(0.0F);
+  state.distance_to_ipc.reset(0.0F);
   state.gains_to_step.reset({0.0F, 0.0F, 0.0F});
   // device_reset/bytes (Constant)
   for (std::size_t i = 0; i < 2; ++i) signals.device_reset_bytes[i] = device_reset_bytes_value[i];
@@ -375,24 +375,6 @@ void step_rate_1() {
       duet::hardware::write("adc:ADC1/6", count);
     }
   }
-  // samples_to_step (RateTransition)
-  std::uint16_t adc_samples[100]{};
-  {
-    const auto& value = state.samples_to_step.read();
-    for (std::size_t i = 0; i < 100; ++i) adc_samples[i] = value[i];
-  }
-  // samples_single (Convert)
-  float adc_values[100]{};
-  for (std::size_t i = 0; i < 100; ++i) adc_values[i] = duet::blocks::convert<float>(adc_samples[i]);
-  // average (Mean)
-  float adc_mean{};
-  adc_mean = duet::blocks::mean(adc_values, std::size_t{100});
-  // k_adc (Gain)
-  signals.battery_voltage = duet::blocks::gain(adc_mean, 0.00019285583F);
-  // pack (BytePack)
-  duet::blocks::pack(signals.theta, duet::blocks::Endian::little, &signals.message[0]);
-  duet::blocks::pack(signals.battery_voltage, duet::blocks::Endian::little, &signals.message[4]);
-  duet::blocks::pack(signals.distance, duet::blocks::Endian::little, &signals.message[8]);
   // gains_to_step (RateTransition)
   {
     const auto& value = state.gains_to_step.read();
@@ -400,14 +382,15 @@ void step_rate_1() {
   }
   state.init_done.update();
   if (duet::blocks::convert<bool>(signals.sensor_ready)) {
-    state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q, p.kalman_R);
+    state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q);
   }
   state.controller.update_clamped(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F}, 0.001F);
   state.velocity.update(signals.position, 1.0F, 20.0F, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();
   state.adc_wave.update();
-  state.message_to_ipc.write(std::array<std::uint8_t, 12>{signals.message[0], signals.message[1], signals.message[2], signals.message[3], signals.message[4], signals.message[5], signals.message[6], signals.message[7], signals.message[8], signals.message[9], signals.message[10], signals.message[11]}, release_0_every_10);
+  state.theta_to_ipc.write(signals.theta, release_0_every_10);
+  state.distance_to_ipc.write(signals.distance, release_0_every_10);
   state.release_0_every_10 = release_0_every_10 ? 9U : state.release_0_every_10 - 1U;
 }
 
@@ -558,15 +541,34 @@ void step_rate_10() {
       duet::hardware::write("spi:SPI5", written);
     }
   }
-  // message_to_ipc (RateTransition)
-  std::uint8_t message_slow[12]{};
+  // samples_to_step (RateTransition)
+  std::uint16_t adc_samples[100]{};
   {
-    const auto& value = state.message_to_ipc.read();
-    for (std::size_t i = 0; i < 12; ++i) message_slow[i] = value[i];
+    const auto& value = state.samples_to_step.read();
+    for (std::size_t i = 0; i < 100; ++i) adc_samples[i] = value[i];
   }
+  // samples_single (Convert)
+  float adc_values[100]{};
+  for (std::size_t i = 0; i < 100; ++i) adc_values[i] = duet::blocks::convert<float>(adc_samples[i]);
+  // average (Mean)
+  float adc_mean{};
+  adc_mean = duet::blocks::mean(adc_values, std::size_t{100});
+  // k_adc (Gain)
+  signals.battery_voltage = duet::blocks::gain(adc_mean, 0.00019285583F);
+  // theta_to_ipc (RateTransition)
+  float theta_slow{};
+  theta_slow = state.theta_to_ipc.read();
+  // distance_to_ipc (RateTransition)
+  float distance_slow{};
+  distance_slow = state.distance_to_ipc.read();
+  // pack (BytePack)
+  std::uint8_t message[12]{};
+  duet::blocks::pack(theta_slow, duet::blocks::Endian::little, &message[0]);
+  duet::blocks::pack(signals.battery_voltage, duet::blocks::Endian::little, &message[4]);
+  duet::blocks::pack(distance_slow, duet::blocks::Endian::little, &message[8]);
   // send (IpcSend)
   {
-    const double written[] = {duet::blocks::convert<double>(message_slow[0]), duet::blocks::convert<double>(message_slow[1]), duet::blocks::convert<double>(message_slow[2]), duet::blocks::convert<double>(message_slow[3]), duet::blocks::convert<double>(message_slow[4]), duet::blocks::convert<double>(message_slow[5]), duet::blocks::convert<double>(message_slow[6]), duet::blocks::convert<double>(message_slow[7]), duet::blocks::convert<double>(message_slow[8]), duet::blocks::convert<double>(message_slow[9]), duet::blocks::convert<double>(message_slow[10]), duet::blocks::convert<double>(message_slow[11])};
+    const double written[] = {duet::blocks::convert<double>(message[0]), duet::blocks::convert<double>(message[1]), duet::blocks::convert<double>(message[2]), duet::blocks::convert<double>(message[3]), duet::blocks::convert<double>(message[4]), duet::blocks::convert<double>(message[5]), duet::blocks::convert<double>(message[6]), duet::blocks::convert<double>(message[7]), duet::blocks::convert<double>(message[8]), duet::blocks::convert<double>(message[9]), duet::blocks::convert<double>(message[10]), duet::blocks::convert<double>(message[11])};
     duet::hardware::write("ipc:app", written);
   }
   state.init_clock.update(std::uint32_t{4294967295});

@@ -86,7 +86,6 @@ struct Signals {
   float distance;
   std::uint16_t adc_samples_received[100];
   float battery_voltage;
-  std::uint8_t message[12];
   float gains_received[3];
   float linux_gains[3];
 };
@@ -141,7 +140,8 @@ struct State {
   duet::blocks::StepCounter adc_wave;
   duet::blocks::EdgeDetector<bool> adc_request_trigger_edge;
   duet::rt::AsyncTransfer<std::array<std::uint16_t, 100>> samples_to_step;
-  duet::rt::FastToSlow<std::array<std::uint8_t, 12>> message_to_ipc;
+  duet::rt::FastToSlow<float> theta_to_ipc;
+  duet::rt::FastToSlow<float> distance_to_ipc;
   duet::rt::AsyncTransfer<std::array<float, 3>> gains_to_step;
 };
 

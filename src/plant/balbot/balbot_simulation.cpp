@@ -110,7 +110,9 @@ void BalbotSimulation::ensure_segment(Nanoseconds target) {
     committed_derivative_ = mechanics_.derivative(committed_, prepared_drive());
     derivative_valid_ = true;
   }
-  segment_end_time_ = std::min(target, committed_time_ + longest_step);
+  // Segments end at the PWM timer's interrupt too: the firmware sets the duty there, and a drive that changes inside
+  // a segment throws away the part integrated beyond it.
+  segment_end_time_ = std::min({target, committed_time_ + longest_step, std::max(next_pwm_period_, committed_time_)});
   if (segment_end_time_ > committed_time_) {
     const double h = seconds(segment_end_time_ - committed_time_);
     segment_end_ = mechanics_.step(committed_, committed_derivative_, prepared_drive(), h);

@@ -4,6 +4,7 @@
 // blocks do, so that generated code and `duet sim` see the same plant. Each port has a header of this name; CMake
 // chooses which one a build sees.
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -30,13 +31,31 @@ void connect(plant::Plant* plant);
 void write(std::string_view resource, std::span<const double> values);
 void read(std::string_view resource, std::span<double> values);
 
+// A pin's resource name, "gpio:" and the pin's, in a buffer on the stack: a step writes pins every tick, and building
+// a std::string each time was a tenth of a simulated robot's tick.
+class PinResource {
+ public:
+  explicit PinResource(Pin pin) {
+    constexpr std::string_view prefix = "gpio:";
+    const std::size_t length = std::min(pin.name.size(), sizeof text_ - prefix.size());
+    prefix.copy(text_, prefix.size());
+    pin.name.copy(text_ + prefix.size(), length);
+    size_ = prefix.size() + length;
+  }
+  [[nodiscard]] std::string_view name() const { return {text_, size_}; }
+
+ private:
+  char text_[64]{};
+  std::size_t size_ = 0;
+};
+
 inline void gpio_write(Pin pin, bool level) {
   const double value = level ? 1.0 : 0.0;
-  write("gpio:" + std::string{pin.name}, {&value, 1});
+  write(PinResource{pin}.name(), {&value, 1});
 }
 inline bool gpio_read(Pin pin) {
   double value = 0;
-  read("gpio:" + std::string{pin.name}, {&value, 1});
+  read(PinResource{pin}.name(), {&value, 1});
   return value != 0.0;
 }
 

@@ -14,8 +14,9 @@
 //   3. P[k|k] = (I - K C) P:  KC = K * C; M = subtract(I, KC) element by element; P[k|k] = M * P
 //   4. x[k+1|k] = A x[k|k] (+ B u): per row one running sum left to right, as DiscreteStateSpace sums it
 //   5. P[k+1|k] = A P[k|k] A^T + G Q G^T:  (A * P[k|k]) * transpose(A), (G * Q) * transpose(G), then add elementwise
-// output() computes steps 1 and 2; update() computes 1 to 5 (K again, from the same state, so bit-identical). The
-// Joseph form and symmetrisation are deliberately absent: they are not what Simulink computes.
+// output() computes steps 1 and 2 and keeps K (member `gain`); update() computes 2 to 5 with that K, so a step calls
+// output() before update(), as every model step does. The Joseph form and symmetrisation are deliberately absent:
+// they are not what Simulink computes.
 //
 // SteadyStateKalmanFilter is the same filter with a constant gain K (NX x NY) computed beforehand (e.g. on the host
 // with the discrete Riccati equation): steps 2 and 4 only, no covariance.
@@ -37,9 +38,11 @@ namespace detail {
 // The kernels take their sizes at run time and their temporaries from `scratch`, so that the simulation's interpreter
 // runs this very code with the sizes of a model's block; the filters below call them with their fixed sizes.
 
-// How many values of scratch kalman_update needs (kalman_output needs fewer).
+// How many values of scratch kalman_output and kalman_update need (the larger of the two).
 constexpr std::size_t kalman_scratch_size(std::size_t nx, std::size_t ny, std::size_t nw) {
-  return nx * ny + (2 * nx * ny + 4 * ny * ny) + nx + (nx + ny) + 6 * nx * nx + 2 * nx * nw;
+  const std::size_t output = 2 * nx * ny + 4 * ny * ny;
+  const std::size_t update = nx + (nx + ny) + 6 * nx * nx + 2 * nx * nw;
+  return output > update ? output : update;
 }
 
 // Step 1: gain (nx x ny) = P C^T (C P C^T + R)^-1, or zeros for a singular C P C^T + R. scratch: 2 nx ny + 4 ny^2.
@@ -80,24 +83,20 @@ constexpr void kalman_predict_state(const T* estimate, const T* u, std::size_t n
   for (std::size_t i = 0; i < nx; ++i) x[i] = row_times_vector(row_times_vector(a, i, estimate, nx), b, i, u, nu);
 }
 
-// Steps 1 and 2: estimate = x[k|k].
+// Steps 1 and 2: gain (nx x ny, kept for kalman_update) and estimate = x[k|k].
 template <Floating T>
 constexpr void kalman_output(const T* x, const T* p, std::size_t nx, std::size_t ny, const T* y, const T* c, const T* r,
-                             T* estimate, T* scratch) {
-  T* gain = scratch;
-  T* rest = gain + nx * ny;
-  kalman_gain(p, c, r, nx, ny, gain, rest);
-  kalman_correct(x, y, c, gain, nx, ny, estimate, rest);
+                             T* gain, T* estimate, T* scratch) {
+  kalman_gain(p, c, r, nx, ny, gain, scratch);
+  kalman_correct(x, y, c, gain, nx, ny, estimate, scratch);
 }
 
-// Steps 1 to 5: x, p become x[k+1|k], P[k+1|k].
+// Steps 2 to 5 with the gain kalman_output computed in the same step: x, p become x[k+1|k], P[k+1|k].
 template <Floating T>
 constexpr void kalman_update(T* x, T* p, std::size_t nx, std::size_t ny, std::size_t nw, const T* y, const T* u,
-                             std::size_t nu, const T* a, const T* b, const T* c, const T* g, const T* q, const T* r,
+                             std::size_t nu, const T* a, const T* b, const T* c, const T* g, const T* q, const T* gain,
                              T* scratch) {
-  T* gain = scratch;
-  T* gain_scratch = gain + nx * ny;
-  T* estimate = gain_scratch + 2 * nx * ny + 4 * ny * ny;
+  T* estimate = scratch;
   T* correct_scratch = estimate + nx;
   T* reduction = correct_scratch + nx + ny;  // nx x nx, then the temporaries of steps 3 and 5
   T* p_filtered = reduction + nx * nx;
@@ -107,7 +106,6 @@ constexpr void kalman_update(T* x, T* p, std::size_t nx, std::size_t ny, std::si
   T* process_noise = propagated + nx * nx;
   T* g_transposed = process_noise + nx * nx;  // nw x nx
   T* g_q = g_transposed + nw * nx;            // nx x nw
-  kalman_gain(p, c, r, nx, ny, gain, gain_scratch);
   kalman_correct(x, y, c, gain, nx, ny, estimate, correct_scratch);
 
   // P[k|k] = (I - K C) P[k|k-1]
@@ -151,25 +149,26 @@ struct KalmanFilter {
   static_assert(NX >= 1 && NY >= 1 && NW >= 1, "KalmanFilter: at least one state, measurement and noise input");
   static constexpr std::size_t scratch_size = detail::kalman_scratch_size(NX, NY, NW);
 
-  T x[NX];       // x[k|k-1]
-  T p[NX * NX];  // P[k|k-1], row-major
+  T x[NX];          // x[k|k-1]
+  T p[NX * NX];     // P[k|k-1], row-major
+  T gain[NX * NY];  // K of the step: output() computes it, update() uses it
 
-  // estimate = x[k|k] (NX values).
-  constexpr void output(const T* y, const T* c, const T* r, T* estimate) const {
-    std::array<T, scratch_size> scratch{};
-    detail::kalman_output(x, p, NX, NY, y, c, r, estimate, scratch.data());
+  // estimate = x[k|k] (NX values); keeps K for update().
+  constexpr void output(const T* y, const T* c, const T* r, T* estimate) {
+    std::array<T, scratch_size> scratch;  // the kernels write before they read: no zeroing
+    detail::kalman_output(x, p, NX, NY, y, c, r, gain, estimate, scratch.data());
   }
 
-  // x, p become x[k+1|k], P[k+1|k].
-  constexpr void update(const T* y, const T* a, const T* c, const T* g, const T* q, const T* r) {
-    update(y, nullptr, 0, a, nullptr, c, g, q, r);
+  // x, p become x[k+1|k], P[k+1|k], with the K output() computed in this step (a step calls output() first).
+  constexpr void update(const T* y, const T* a, const T* c, const T* g, const T* q) {
+    update(y, nullptr, 0, a, nullptr, c, g, q);
   }
 
   // The same with an input: x[k+1|k] = A x[k|k] + B u, for u (nu values) and B (NX x nu).
   constexpr void update(const T* y, const T* u, std::size_t nu, const T* a, const T* b, const T* c, const T* g,
-                        const T* q, const T* r) {
-    std::array<T, scratch_size> scratch{};
-    detail::kalman_update(x, p, NX, NY, NW, y, u, nu, a, b, c, g, q, r, scratch.data());
+                        const T* q) {
+    std::array<T, scratch_size> scratch;  // the kernels write before they read: no zeroing
+    detail::kalman_update(x, p, NX, NY, NW, y, u, nu, a, b, c, g, q, gain, scratch.data());
   }
 };
 
@@ -181,7 +180,7 @@ struct SteadyStateKalmanFilter {
 
   // estimate = x[k|k] = x + K (y - C x) (NX values).
   constexpr void output(const T* y, const T* c, const T* gain_k, T* estimate) const {
-    std::array<T, NX + NY> scratch{};
+    std::array<T, NX + NY> scratch;
     detail::steady_state_kalman_output(x, NX, NY, y, c, gain_k, estimate, scratch.data());
   }
 
@@ -192,7 +191,7 @@ struct SteadyStateKalmanFilter {
 
   // The same with an input: x[k+1|k] = A x[k|k] + B u, for u (nu values) and B (NX x nu).
   constexpr void update(const T* y, const T* u, std::size_t nu, const T* a, const T* b, const T* c, const T* gain_k) {
-    std::array<T, 2 * NX + NY> scratch{};
+    std::array<T, 2 * NX + NY> scratch;
     detail::steady_state_kalman_update(x, NX, NY, y, u, nu, a, b, c, gain_k, scratch.data());
   }
 };

@@ -82,7 +82,7 @@ template <Floating T>
 // The same for a fixed size N, with its scratch on the stack.
 template <Floating T, std::size_t N>
 [[nodiscard]] constexpr bool matrix_inverse(const T* a, T* inverse) {
-  std::array<T, 2 * N * N> scratch{};
+  std::array<T, 2 * N * N> scratch;  // written before it is read
   return matrix_inverse(a, inverse, N, scratch.data());
 }
 

@@ -66,7 +66,7 @@ struct DiscreteStateSpace {
   }
 
   constexpr void update(const T* u, const T* a, const T* b) {
-    std::array<T, NX> next{};
+    std::array<T, NX> next;  // written before it is read
     detail::state_space_update(x, NX, NU, u, a, b, next.data());
   }
 };
