@@ -215,7 +215,7 @@ void step_rate_1() {
   state.second_order.update(signals.step, second_order_numerator, p.tf_den);
   state.oscillator.update(&signals.reference, p.ss_a, oscillator_b);
   state.window.update(signals.square);
-  state.tracker.update(&signals.filtered, tracker_a, tracker_c, tracker_g, tracker_q, tracker_r);
+  state.tracker.update(&signals.filtered, tracker_a, tracker_c, tracker_g, tracker_q);
   state.observer.update(&signals.saw_centred, observer_a, observer_c, observer_gain);
   state.pid.update_clamped(signals.error, {2.0F, 4.0F, 0.05F, 50.0F, -1.0F, 1.0F}, 0.001F);
   state.actuator.update(signals.command, 10.0F, 0.001F);
