@@ -96,6 +96,23 @@ TEST(Balbot, WithTheThesisPdGainsItFalls) {
   EXPECT_GT(run.largest("plant.theta_deg", 2, 3.5), 60.0);
 }
 
+TEST(Balbot, ThePidTakesTheGainsLinuxSends) {
+  // P = 0.5, I = 0, D = 0.25 as three little-endian floats at 3 s (figure 5.59): from then on the PID computes with
+  // them instead of the tuned P, I, D.
+  plant::BalbotScenario scenario = released_at_five_degrees();
+  scenario.ipc_messages.push_back({3, {0, 0, 0, 63, 0, 0, 0, 0, 0, 0, 128, 62}});
+  const RobotRun run{scenario, 4};
+  EXPECT_EQ(run.at("gains_from_linux", 2.9), 0.0);
+  EXPECT_EQ(run.at("gains_from_linux", 3.1), 1.0);
+  EXPECT_EQ(run.at("linux_gains[0]", 3.1), 0.5);
+  EXPECT_EQ(run.at("linux_gains[2]", 3.1), 0.25);
+  // The same run without the message: the same until 3 s (the LQR drives, the PID only computes), then the PID's
+  // output differs.
+  const RobotRun tuned{released_at_five_degrees(), 4};
+  EXPECT_EQ(run.at("y_pid", 2.9), tuned.at("y_pid", 2.9));
+  EXPECT_GT(std::abs(run.at("y_pid", 3.5) - tuned.at("y_pid", 3.5)), 0.01);
+}
+
 TEST(Balbot, RejectsTheThesisDisturbancePulseAndAPush) {
   plant::BalbotScenario scenario = released_at_five_degrees();
   scenario.duty_disturbances.push_back({10, 1.0, 0.001});  // figure 5.71: a 1 ms pulse of 1 on the duty

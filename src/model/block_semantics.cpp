@@ -52,6 +52,12 @@ blocks::Endian endian_of(const ProgramBlock& block) {
 
 std::size_t unpack_offset(const ProgramBlock& block) { return static_cast<std::size_t>(number(block, "offset", 0)); }
 
+std::optional<std::size_t> input_of(const ProgramBlock& block, std::string_view port) {
+  const auto found = std::find(block.input_ports.begin(), block.input_ports.end(), port);
+  if (found == block.input_ports.end()) return std::nullopt;
+  return static_cast<std::size_t>(found - block.input_ports.begin());
+}
+
 std::size_t block_window(const ProgramBlock& block) {
   return static_cast<std::size_t>(std::max(1.0, number(block, "window", 1)));
 }

@@ -33,8 +33,11 @@ struct SourceSteps {
 
 [[nodiscard]] blocks::Endian endian_of(const ProgramBlock& block);   // little unless given
 [[nodiscard]] std::size_t unpack_offset(const ProgramBlock& block);  // a ByteUnpack's first byte
-[[nodiscard]] std::size_t block_window(const ProgramBlock& block);   // a MovingAverage's window, 1 or more
-[[nodiscard]] bool anti_windup_clamping(const ProgramBlock& block);  // a DiscretePid's anti_windup: clamping
+[[nodiscard]] std::size_t block_window(const ProgramBlock& block);
+// The place among the block's inputs of the input connected to `port`, if it is (a DiscretePid's external gains).
+[[nodiscard]] std::optional<std::size_t> input_of(const ProgramBlock& block,
+                                                  std::string_view port);  // a MovingAverage's window, 1 or more
+[[nodiscard]] bool anti_windup_clamping(const ProgramBlock& block);        // a DiscretePid's anti_windup: clamping
 
 struct MatrixSizes {
   std::size_t rows = 1;

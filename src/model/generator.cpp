@@ -482,8 +482,8 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
                   argument(block, "n", pid_default_filter, t, "i") + ")");
   }
   if (type == "DiscretePid") {
-    return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
-                  argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
+    return assign(state(block, "i") + ".output(" + in(0, "i") + ", " + "{" + pid_gain(block, "p", t) + ", " +
+                  pid_gain(block, "i", t) + ", " + pid_gain(block, "d", t) + ", " +
                   argument(block, "n", pid_default_filter, t, "i") + ", " +
                   argument(block, "lower", -infinity, t, "i") + ", " + argument(block, "upper", infinity, t, "i") +
                   "})");
@@ -524,13 +524,18 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
   }
   if (type == "DiscretePid") {
     const std::string update = anti_windup_clamping(block) ? ".update_clamped(" : ".update(";
-    return for_each(n, state(block, "i") + update + in("i") + ", " + "{" + argument(block, "p", 0, t, "i") + ", " +
-                           argument(block, "i", 0, t, "i") + ", " + argument(block, "d", 0, t, "i") + ", " +
+    return for_each(n, state(block, "i") + update + in("i") + ", " + "{" + pid_gain(block, "p", t) + ", " +
+                           pid_gain(block, "i", t) + ", " + pid_gain(block, "d", t) + ", " +
                            argument(block, "n", pid_default_filter, t, "i") + ", " +
                            argument(block, "lower", -infinity, t, "i") + ", " +
                            argument(block, "upper", infinity, t, "i") + "}, " + period + ");");
   }
   return {};
+}
+
+std::string Generator::pid_gain(const ProgramBlock& block, const std::string& name, DataType type) const {
+  if (const auto k = input_of(block, name)) return element(block.inputs[*k], "i");  // an external gain
+  return argument(block, name, 0, type, "i");
 }
 
 std::string Generator::source_output(const ProgramBlock& block) const {

@@ -72,6 +72,8 @@ class Generator {
   [[nodiscard]] static std::string shared_countdown(std::size_t task, std::uint32_t ratio);
   [[nodiscard]] std::vector<std::pair<std::size_t, std::uint32_t>> shared_countdowns() const;  // (task, ratio)
   [[nodiscard]] std::string source_output(const ProgramBlock& block) const;
+  // A DiscretePid's gain: its input where connected, else its parameter.
+  [[nodiscard]] std::string pid_gain(const ProgramBlock& block, const std::string& name, DataType type) const;
   [[nodiscard]] std::string bytes_output(const ProgramBlock& block) const;
   // A block parameter as a `const T*`: a tunable parameter's array, or the block's constant array of the literal.
   [[nodiscard]] std::string array_argument(const ProgramBlock& block, const std::string& name, DataType type) const;

@@ -423,9 +423,13 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
   if (type == "DiscretePid") {
     auto states = std::make_shared<std::vector<blocks::DiscretePid<T>>>(n);
     const bool clamping = anti_windup_clamping(block);
-    const std::array<Operand<T>, 6> gains{c.argument<T>(block, "p", 0),
-                                          c.argument<T>(block, "i", 0),
-                                          c.argument<T>(block, "d", 0),
+    const auto gain = [&](const char* name) {  // an external gain's input, or the parameter
+      const auto k = input_of(block, name);
+      return k ? c.input<T>(block, *k) : c.argument<T>(block, name, 0);
+    };
+    const std::array<Operand<T>, 6> gains{gain("p"),
+                                          gain("i"),
+                                          gain("d"),
                                           c.argument<T>(block, "n", pid_default_filter),
                                           c.argument<T>(block, "lower", -infinity),
                                           c.argument<T>(block, "upper", infinity)};

@@ -111,7 +111,8 @@ class ProgramBuilder {
       block.identifier = identifier_of(node.path);
       block.block = node.block;
       const BlockType* type = find_block_type(node.block->type);
-      const std::vector<std::string_view> declared = type != nullptr ? type->inputs : std::vector<std::string_view>{};
+      std::vector<std::string_view> declared = type != nullptr ? type->inputs : std::vector<std::string_view>{};
+      if (type != nullptr) declared.insert(declared.end(), type->optional_inputs.begin(), type->optional_inputs.end());
       for (const std::size_t k : port_order(*node.block, declared)) {
         block.inputs.push_back(signal_of.at(node.inputs[k].signal));
         block.input_ports.push_back(node.block->inputs[k].port);

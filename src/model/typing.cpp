@@ -354,6 +354,7 @@ class BlockCheck {
     }
     if (is({"Sum", "Product", "Atan2", "MinMax"})) same(all, true, true);
     if (block_.type() == "ByteUnpack") unpacked_bytes();
+    if (block_.type() == "DiscretePid") external_gains();
     if (is({"TransferFunction", "MovingAverage"}) && !input_type(0).shape.empty()) {
       error(input_location(0),
             "size mismatch: " + name_ + " filters one signal, but " + input(0) + " is " + describe(input_type(0)),
@@ -405,6 +406,25 @@ class BlockCheck {
                   describe(input_type(0)),
               "output yN carries element N: connect y1 to y" + std::to_string(elements) + " only");
         break;
+      }
+    }
+  }
+
+  // A DiscretePid's gain comes from its input or its parameter, and an input gain is of the error's type.
+  void external_gains() {
+    for (const char* name : {"p", "i", "d"}) {
+      const auto k = input_of(block_, name);
+      if (!k) continue;
+      if (const Argument* given = block_.argument(name)) {
+        error(given->location, name_ + " has both an input '" + name + "' and a parameter '" + name + "'",
+              "give the gain one way: the input (external) or the parameter");
+      }
+      const SignalType& gain = input_type(*k);
+      if (gain.type != input_type(0).type || (!gain.shape.empty() && gain.shape != input_type(0).shape)) {
+        error(input_location(*k),
+              "type mismatch: " + input(*k) + " of " + name_ + " is " + describe(gain) + ", but " + input(0) + " is " +
+                  describe(input_type(0)),
+              "a gain is one value, or one per element, of the error's type");
       }
     }
   }

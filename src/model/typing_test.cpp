@@ -304,6 +304,17 @@ const Case cases[] = {
      "  - {name: a, type: MovingAverage, parameters: {window: 0}, inputs: {u: x}, outputs: {y: y}}\n",
      "m.yaml:6:57: error: parameter 'window' of block 'a' (MovingAverage) must be one number, 1 or more (for example "
      "window: 1)\n"},
+    {"pid_gain_as_input_and_parameter", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: a, type: DiscretePid, parameters: {p: 2}, inputs: {error: x, p: x}, outputs: {y: y}}\n",
+     "m.yaml:6:50: error: block 'a' (DiscretePid) has both an input 'p' and a parameter 'p' (give the gain one way: "
+     "the input (external) or the parameter)\n"},
+    {"pid_gain_of_another_type", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: k, type: Constant, parameters: {value: 1, type: single}, outputs: {y: gain}}\n"
+     "  - {name: a, type: DiscretePid, inputs: {error: x, p: gain}, outputs: {y: y}}\n",
+     "m.yaml:7:53: error: type mismatch: input 'p' (signal 'gain') of block 'a' (DiscretePid) is single, but input "
+     "'error' (signal 'x') is double (a gain is one value, or one per element, of the error's type)\n"},
 };
 
 class Mistyped : public ::testing::TestWithParam<Case> {};

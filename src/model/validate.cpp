@@ -19,6 +19,13 @@ std::string list_of(const std::vector<std::string_view>& names) {
   return text.empty() ? "none" : text;
 }
 
+// A type's inputs, the optional ones last.
+std::vector<std::string_view> all_inputs(const BlockType& type) {
+  std::vector<std::string_view> names = type.inputs;
+  names.insert(names.end(), type.optional_inputs.begin(), type.optional_inputs.end());
+  return names;
+}
+
 // "u1", "u2", ...: the ports of a block with any number of inputs.
 bool is_numbered_input(const std::string& port) {
   return port.size() >= 2 && port[0] == 'u' && port[1] != '0' &&
@@ -160,12 +167,14 @@ class Validator {
   void check_ports_and_parameters(const Block& block, const BlockType& type) {
     std::set<std::string> connected;
     for (const Connection& input : block.inputs) {
-      const bool known = type.variadic_inputs
-                             ? is_numbered_input(input.port)
-                             : std::find(type.inputs.begin(), type.inputs.end(), input.port) != type.inputs.end();
+      const bool optional =
+          std::find(type.optional_inputs.begin(), type.optional_inputs.end(), input.port) != type.optional_inputs.end();
+      const bool known = optional || (type.variadic_inputs ? is_numbered_input(input.port)
+                                                           : std::find(type.inputs.begin(), type.inputs.end(),
+                                                                       input.port) != type.inputs.end());
       if (!known) {
         error(input.location, "block '" + block.name + "' (" + block.type + ") has no input '" + input.port + "'",
-              type.variadic_inputs ? "its inputs are u1, u2, ..." : "its inputs: " + list_of(type.inputs));
+              type.variadic_inputs ? "its inputs are u1, u2, ..." : "its inputs: " + list_of(all_inputs(type)));
       }
       connected.insert(input.port);
     }

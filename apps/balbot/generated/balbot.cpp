@@ -76,7 +76,8 @@ static_assert(offsetof(Signals, adc_samples_received) == 132, "the A2L's layout"
 static_assert(offsetof(Signals, battery_voltage) == 332, "the A2L's layout");
 static_assert(offsetof(Signals, gains_received) == 336, "the A2L's layout");
 static_assert(offsetof(Signals, linux_gains) == 348, "the A2L's layout");
-static_assert(sizeof(Signals) == 360);
+static_assert(offsetof(Signals, gains_from_linux) == 360, "the A2L's layout");
+static_assert(sizeof(Signals) == 364);
 
 Parameters parameters{
     .P = 0.0196F,
@@ -182,6 +183,7 @@ void initialize() {
   state.theta_to_ipc.reset(0.0F);
   state.distance_to_ipc.reset(0.0F);
   state.gains_to_step.reset({0.0F, 0.0F, 0.0F});
+  state.sent_to_step.reset(false);
   // device_reset/bytes (Constant)
   for (std::size_t i = 0; i < 2; ++i) signals.device_reset_bytes[i] = device_reset_bytes_value[i];
   // path_reset/bytes (Constant)
@@ -264,8 +266,6 @@ void step_rate_1() {
   signals.theta_rate = signals.estimate[1];
   // compare (Sum)
   signals.error = duet::blocks::subtract(p.target, signals.theta);
-  // controller (DiscretePid)
-  signals.y_pid = state.controller.output(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F});
   // to_radians (Gain)
   float theta_rad{};
   theta_rad = duet::blocks::gain(signals.theta, 0.017453292F);
@@ -321,34 +321,6 @@ void step_rate_1() {
   state_vector[3] = theta_rate_rad;
   // feedback (StateFeedback)
   duet::blocks::state_feedback(p.K, state_vector, 1, 4, &signals.y_lqr);
-  // choose (Switch)
-  float y_chosen{};
-  y_chosen = duet::blocks::select(duet::blocks::convert<bool>(p.use_lqr), signals.y_lqr, signals.y_pid);
-  // duty_limit (Saturation)
-  signals.y = duet::blocks::saturate(y_chosen, -1.0F, 1.0F);
-  // direction (Compare)
-  bool clockwise{};
-  clockwise = duet::blocks::compare(duet::blocks::CompareOperator::greater, signals.y, 0.0F);
-  // other_direction (Not)
-  bool counter_clockwise{};
-  counter_clockwise = !duet::blocks::convert<bool>(clockwise);
-  // in1 (Logic)
-  signals.left_in1 = duet::blocks::logic<duet::blocks::LogicOperator::logical_and>(duet::blocks::convert<bool>(clockwise), duet::blocks::convert<bool>(run));
-  // in2 (Logic)
-  signals.left_in2 = duet::blocks::logic<duet::blocks::LogicOperator::logical_and>(duet::blocks::convert<bool>(counter_clockwise), duet::blocks::convert<bool>(run));
-  // bin1_pin (GpioOut)
-  duet::hardware::gpio_write(bin1_pin_pin, signals.left_in1);
-  // bin2_pin (GpioOut)
-  duet::hardware::gpio_write(bin2_pin_pin, signals.left_in2);
-  // ain1_pin (GpioOut)
-  duet::hardware::gpio_write(ain1_pin_pin, signals.left_in2);
-  // ain2_pin (GpioOut)
-  duet::hardware::gpio_write(ain2_pin_pin, signals.left_in1);
-  // duty_size (Abs)
-  float duty_size{};
-  duty_size = duet::blocks::absolute(signals.y);
-  // to_percent (Gain)
-  signals.duty_percent = duet::blocks::gain(duty_size, 100.0F);
   // trigger_wave (PulseGenerator)
   bool trigger{};
   trigger = duet::blocks::convert<bool>(duet::blocks::pulse(state.trigger_wave.output(), 100U, 50U, 0U, std::uint8_t{1}));
@@ -380,11 +352,59 @@ void step_rate_1() {
     const auto& value = state.gains_to_step.read();
     for (std::size_t i = 0; i < 3; ++i) signals.linux_gains[i] = value[i];
   }
+  // linux_pid (Demux)
+  float p_linux{};
+  float i_linux{};
+  float d_linux{};
+  p_linux = signals.linux_gains[0];
+  i_linux = signals.linux_gains[1];
+  d_linux = signals.linux_gains[2];
+  // sent_to_step (RateTransition)
+  signals.gains_from_linux = state.sent_to_step.read();
+  // p_gain (Switch)
+  float p_gain{};
+  p_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), p_linux, p.P);
+  // i_gain (Switch)
+  float i_gain{};
+  i_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), i_linux, p.I);
+  // d_gain (Switch)
+  float d_gain{};
+  d_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), d_linux, p.D);
+  // controller (DiscretePid)
+  signals.y_pid = state.controller.output(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F});
+  // choose (Switch)
+  float y_chosen{};
+  y_chosen = duet::blocks::select(duet::blocks::convert<bool>(p.use_lqr), signals.y_lqr, signals.y_pid);
+  // duty_limit (Saturation)
+  signals.y = duet::blocks::saturate(y_chosen, -1.0F, 1.0F);
+  // direction (Compare)
+  bool clockwise{};
+  clockwise = duet::blocks::compare(duet::blocks::CompareOperator::greater, signals.y, 0.0F);
+  // other_direction (Not)
+  bool counter_clockwise{};
+  counter_clockwise = !duet::blocks::convert<bool>(clockwise);
+  // in1 (Logic)
+  signals.left_in1 = duet::blocks::logic<duet::blocks::LogicOperator::logical_and>(duet::blocks::convert<bool>(clockwise), duet::blocks::convert<bool>(run));
+  // in2 (Logic)
+  signals.left_in2 = duet::blocks::logic<duet::blocks::LogicOperator::logical_and>(duet::blocks::convert<bool>(counter_clockwise), duet::blocks::convert<bool>(run));
+  // bin1_pin (GpioOut)
+  duet::hardware::gpio_write(bin1_pin_pin, signals.left_in1);
+  // bin2_pin (GpioOut)
+  duet::hardware::gpio_write(bin2_pin_pin, signals.left_in2);
+  // ain1_pin (GpioOut)
+  duet::hardware::gpio_write(ain1_pin_pin, signals.left_in2);
+  // ain2_pin (GpioOut)
+  duet::hardware::gpio_write(ain2_pin_pin, signals.left_in1);
+  // duty_size (Abs)
+  float duty_size{};
+  duty_size = duet::blocks::absolute(signals.y);
+  // to_percent (Gain)
+  signals.duty_percent = duet::blocks::gain(duty_size, 100.0F);
   state.init_done.update();
   if (duet::blocks::convert<bool>(signals.sensor_ready)) {
     state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q);
   }
-  state.controller.update_clamped(signals.error, {p.P, p.I, p.D, p.N, -1.0F, 1.0F}, 0.001F);
+  state.controller.update_clamped(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F}, 0.001F);
   state.velocity.update(signals.position, 1.0F, 20.0F, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();
@@ -860,6 +880,7 @@ void task_IPCC_RX1() {
   signals.gains_received[1] = duet::blocks::unpack<float>(&receive_message[4], duet::blocks::Endian::little);
   signals.gains_received[2] = duet::blocks::unpack<float>(&receive_message[8], duet::blocks::Endian::little);
   state.gains_to_step.write(std::array<float, 3>{signals.gains_received[0], signals.gains_received[1], signals.gains_received[2]});
+  state.sent_to_step.write(true);
 }
 
 // The task table fits the executive (duet/rt/task_table.hpp).

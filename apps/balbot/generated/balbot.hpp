@@ -88,6 +88,7 @@ struct Signals {
   float battery_voltage;
   float gains_received[3];
   float linux_gains[3];
+  bool gains_from_linux;
 };
 
 namespace code::echo_every_second {
@@ -143,6 +144,7 @@ struct State {
   duet::rt::FastToSlow<float> theta_to_ipc;
   duet::rt::FastToSlow<float> distance_to_ipc;
   duet::rt::AsyncTransfer<std::array<float, 3>> gains_to_step;
+  duet::rt::AsyncTransfer<bool> sent_to_step;
 };
 
 extern Parameters parameters;

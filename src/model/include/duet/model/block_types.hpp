@@ -26,6 +26,8 @@ struct BlockType {
   bool variadic_inputs = false;
   // Ports and parameters are the instance's own (Subsystem, Code): not checked against the table.
   bool user_defined_ports = false;
+  // Inputs that may be left unconnected (a DiscretePid's gains from signals instead of its parameters).
+  std::vector<std::string_view> optional_inputs = {};
 };
 
 [[nodiscard]] std::span<const BlockType> block_types();
