@@ -14,7 +14,7 @@ using balbot::MechanicalState;
 using balbot::Nanoseconds;
 using balbot::never;
 
-constexpr Nanoseconds longest_step = 1'000'000;  // RK4 steps of at most 1 ms
+constexpr Nanoseconds longest_step = 1'000'000;  // integration steps of at most 1 ms
 constexpr Nanoseconds pwm_period = 500'000;      // TIM1, thesis task 4
 constexpr double degrees_per_radian = 180 / std::numbers::pi;
 

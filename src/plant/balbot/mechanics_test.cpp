@@ -71,8 +71,8 @@ TEST(BalbotMechanics, EnergyIsConservedWithoutFrictionWithTheMotorsDisconnected)
     s = mechanics.step(s, mechanics.derivative(s, open), open, 1e-3);
     largest_error = std::max(largest_error, std::abs(mechanics.energy(s) - start));
   }
-  EXPECT_GT(s.theta, 1.0);  // it did fall
-  EXPECT_LT(largest_error / start, 1e-7);
+  EXPECT_GT(s.theta, 1.0);                 // it did fall
+  EXPECT_LT(largest_error / start, 1e-5);  // the midpoint rule at 1 ms through a whole fall: 1.1e-6 (RK4: 1e-8)
 }
 
 TEST(BalbotMechanics, FrictionAndShortedMotorsTakeEnergy) {
