@@ -67,6 +67,15 @@ bool anti_windup_clamping(const ProgramBlock& block) {
   return anti_windup != nullptr && anti_windup->text == "clamping";
 }
 
+ArgumentSize argument_size(const Program& program, const ProgramBlock& block, const std::string& name) {
+  const Argument* argument = block.argument(name);
+  if (argument == nullptr) return {};
+  const Value& value =
+      argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value : argument->value;
+  return {value.shape.empty() ? 1 : value.shape[0], value.shape.size() == 2 ? value.shape[1] : 1,
+          value.elements.size()};
+}
+
 MatrixSizes matrix_sizes(const Program& program, const ProgramBlock& block) {
   const SignalType& a = program.signals[block.inputs.at(0)].type;
   const SignalType& b = program.signals[block.inputs.at(1)].type;

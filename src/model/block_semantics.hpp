@@ -39,6 +39,15 @@ struct SourceSteps {
                                                   std::string_view port);  // a MovingAverage's window, 1 or more
 [[nodiscard]] bool anti_windup_clamping(const ProgramBlock& block);        // a DiscretePid's anti_windup: clamping
 
+// The size of what a block parameter gives, as matrices count it: a literal's as written, a tunable parameter's as
+// declared; a vector is a column, a scalar 1x1. A parameter the block is not given has no elements.
+struct ArgumentSize {
+  std::size_t rows = 1;
+  std::size_t columns = 1;
+  std::size_t elements = 0;
+};
+[[nodiscard]] ArgumentSize argument_size(const Program& program, const ProgramBlock& block, const std::string& name);
+
 struct MatrixSizes {
   std::size_t rows = 1;
   std::size_t inner = 1;

@@ -591,33 +591,6 @@ std::string Generator::array_argument(const ProgramBlock& block, const std::stri
   return block.identifier + "_" + name;
 }
 
-namespace {
-
-std::size_t rows(const Program& program, const ProgramBlock& block, const char* name) {
-  const Argument* argument = block.argument(name);
-  if (argument == nullptr) return 1;
-  const std::vector<std::size_t>& shape =
-      argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value.shape : argument->value.shape;
-  return shape.empty() ? 1 : shape[0];
-}
-
-std::size_t columns(const Program& program, const ProgramBlock& block, const char* name) {
-  const Argument* argument = block.argument(name);
-  if (argument == nullptr) return 1;
-  const std::vector<std::size_t>& shape =
-      argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value.shape : argument->value.shape;
-  return shape.size() == 2 ? shape[1] : 1;
-}
-
-std::size_t elements_of(const Program& program, const ProgramBlock& block, const char* name) {
-  const Argument* argument = block.argument(name);
-  if (argument == nullptr) return 0;
-  return argument->kind == Argument::Kind::parameter ? program.parameter(*argument).value.elements.size()
-                                                     : argument->value.elements.size();
-}
-
-}  // namespace
-
 std::string Generator::sized_state_type(const ProgramBlock& block) const {
   if (block.inputs.empty()) return {};  // the sized blocks all have an input
   const SignalType& out = program_.signals[block.outputs[0]].type;
@@ -626,22 +599,22 @@ std::string Generator::sized_state_type(const ProgramBlock& block) const {
   const std::size_t inputs = program_.signals[block.inputs[0]].type.elements();
   if (type == "TransferFunction") {
     return "duet::blocks::DiscreteTransferFunction<" + t + ", " +
-           std::to_string(elements_of(program_, block, "denominator") - 1) + ">";
+           std::to_string(argument_size(program_, block, "denominator").elements - 1) + ">";
   }
   if (type == "StateSpace") {
-    return "duet::blocks::DiscreteStateSpace<" + t + ", " + std::to_string(rows(program_, block, "a")) + ", " +
-           std::to_string(inputs) + ", " + std::to_string(out.elements()) + ">";
+    return "duet::blocks::DiscreteStateSpace<" + t + ", " + std::to_string(argument_size(program_, block, "a").rows) +
+           ", " + std::to_string(inputs) + ", " + std::to_string(out.elements()) + ">";
   }
   if (type == "MovingAverage") {
     return "duet::blocks::MovingAverage<" + t + ", " + std::to_string(block_window(block)) + ">";
   }
   if (type == "KalmanFilter") {
-    const std::string states = std::to_string(rows(program_, block, "a"));
+    const std::string states = std::to_string(argument_size(program_, block, "a").rows);
     if (block.argument("gain") != nullptr) {
       return "duet::blocks::SteadyStateKalmanFilter<" + t + ", " + states + ", " + std::to_string(inputs) + ">";
     }
     return "duet::blocks::KalmanFilter<" + t + ", " + states + ", " + std::to_string(inputs) + ", " +
-           std::to_string(columns(program_, block, "g")) + ">";
+           std::to_string(argument_size(program_, block, "g").columns) + ">";
   }
   return {};
 }
@@ -653,16 +626,16 @@ std::string Generator::sized_state_reset(const ProgramBlock& block) const {
   std::string text = "  " + name + " = {};\n";
   const auto fill = [&](const std::string& member, std::size_t count, const char* parameter, double fallback) {
     const bool given = block.argument(parameter) != nullptr;
-    const bool scalar = given && elements_of(program_, block, parameter) == 1;
+    const bool scalar = given && argument_size(program_, block, parameter).elements == 1;
     for (std::size_t i = 0; i < count; ++i) {
       text += "  " + name + "." + member + "[" + std::to_string(i) +
               "] = " + argument(block, parameter, fallback, t, scalar || !given ? "0" : std::to_string(i)) + ";\n";
     }
   };
-  if (type == "StateSpace" || type == "KalmanFilter") fill("x", rows(program_, block, "a"), "initial", 0);
+  if (type == "StateSpace" || type == "KalmanFilter") fill("x", argument_size(program_, block, "a").rows, "initial", 0);
   if (type == "MovingAverage") fill("window", block_window(block), "initial", 0);
   if (type == "KalmanFilter" && block.argument("gain") == nullptr) {
-    const std::size_t states = rows(program_, block, "a");
+    const std::size_t states = argument_size(program_, block, "a").rows;
     if (block.argument("covariance") != nullptr) {
       fill("p", states * states, "covariance", 0);
     } else {  // the identity

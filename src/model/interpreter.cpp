@@ -1,7 +1,6 @@
 #include "duet/model/interpreter.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstring>
 #include <deque>
 #include <limits>
@@ -250,16 +249,11 @@ Compiled sized(Compiler& c, const ProgramBlock& block) {
   const std::size_t n_out = c.elements_out(block);
   const Operand<T> u = c.input<T>(block, 0);
   const auto matrix = [&](const char* name) { return c.argument<T>(block, name, 0); };
-  const auto count = [&](const char* name) {
-    const Argument* argument = block.argument(name);
-    if (argument == nullptr) return std::size_t{0};
-    return argument->kind == Argument::Kind::parameter ? c.program().parameter(*argument).value.elements.size()
-                                                       : argument->value.elements.size();
-  };
+  const auto size = [&](const char* name) { return argument_size(c.program(), block, name); };
   const auto data = [](const Operand<T>& operand) { return operand.all(0).data(); };
   static constexpr const T* no_input = nullptr;  // the filters' B u term: the blocks have no input u
   if (type == "TransferFunction") {
-    const std::size_t order = count("denominator") - 1;
+    const std::size_t order = size("denominator").elements - 1;
     auto state = std::make_shared<std::vector<T>>(order);
     const Operand<T> numerator = matrix("numerator");
     const Operand<T> denominator = matrix("denominator");
@@ -289,7 +283,7 @@ Compiled sized(Compiler& c, const ProgramBlock& block) {
               state->second = 0;
             }};
   }
-  const std::size_t nx = static_cast<std::size_t>(std::sqrt(static_cast<double>(count("a"))));
+  const std::size_t nx = size("a").rows;
   auto x = std::make_shared<std::vector<T>>(nx);
   const Operand<T> a = matrix("a");
   const Operand<T> cm = matrix("c");
@@ -323,7 +317,7 @@ Compiled sized(Compiler& c, const ProgramBlock& block) {
              }},
             reset_x};
   }
-  const std::size_t nw = count("q") == 0 ? 1 : static_cast<std::size_t>(std::sqrt(static_cast<double>(count("q"))));
+  const std::size_t nw = size("g").columns;
   auto p = std::make_shared<std::vector<T>>(nx * nx);
   const Operand<T> g = matrix("g");
   const Operand<T> q = matrix("q");

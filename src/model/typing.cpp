@@ -61,16 +61,6 @@ SignalType argument_type(const Program& program, const Argument& argument, DataT
   return {fallback, argument.value.shape};
 }
 
-// The shape of what a block parameter gives: a literal's as written, a tunable parameter's declared.
-std::vector<std::size_t> argument_shape(const Program& program, const ProgramBlock& block, const char* name) {
-  const Argument* argument = block.argument(name);
-  if (argument == nullptr) return {};
-  if (argument->kind == Argument::Kind::parameter) return program.parameter(*argument).value.shape;
-  return argument->value.shape;
-}
-
-std::size_t rows_of(const std::vector<std::size_t>& shape) { return shape.empty() ? 1 : shape[0]; }
-
 std::vector<std::size_t> product_shape(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
   const std::size_t rows = a.empty() ? 1 : a[0];
   if (b.size() == 1) return {rows};  // a matrix times a vector is a vector
@@ -145,7 +135,7 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
   } else if (type == "StateSpace" || type == "StateFeedback" || type == "KalmanFilter") {
     // Outputs as many as the rows of C (StateSpace), of K (StateFeedback) or of A (KalmanFilter: the states).
     const char* rows = type == "StateSpace" ? "c" : type == "StateFeedback" ? "k" : "a";
-    if (inputs[0]) y = SignalType{inputs[0]->type, sized(rows_of(argument_shape(program, block, rows)))};
+    if (inputs[0]) y = SignalType{inputs[0]->type, sized(argument_size(program, block, rows).rows)};
   } else if (type == "SpiReceive") {
     y = SignalType{DataType::uint8, sized(size_argument(block, "size"))};
   } else if (type == "GpioIn") {
@@ -452,24 +442,22 @@ class BlockCheck {
 
   // The matrices of StateSpace, KalmanFilter and StateFeedback, and a TransferFunction's coefficients, agree.
   void matrices() {
-    const auto shape = [this](const char* name) { return argument_shape(program_, block_, name); };
+    const auto size = [this](const char* name) { return argument_size(program_, block_, name); };
     const auto has = [this](const char* name) { return block_.argument(name) != nullptr; };
     const auto expect = [&](const char* name, std::size_t rows, std::size_t columns) {
       if (!has(name)) return;
-      const std::vector<std::size_t> given = shape(name);
-      const std::size_t given_rows = given.empty() ? 1 : given[0];
-      const std::size_t given_columns = given.size() == 2 ? given[1] : 1;
-      if (given_rows == rows && given_columns == columns) return;
+      const ArgumentSize given = size(name);
+      if (given.rows == rows && given.columns == columns) return;
       error(block_.argument(name)->location,
-            "size mismatch: parameter '" + std::string{name} + "' of " + name_ + " is " + std::to_string(given_rows) +
-                "x" + std::to_string(given_columns) + ", but it must be " + std::to_string(rows) + "x" +
+            "size mismatch: parameter '" + std::string{name} + "' of " + name_ + " is " + std::to_string(given.rows) +
+                "x" + std::to_string(given.columns) + ", but it must be " + std::to_string(rows) + "x" +
                 std::to_string(columns),
             "matrices are lists of rows; a vector input is a column");
     };
     const std::size_t inputs = input_type(0).elements();
     if (block_.type() == "TransferFunction") {
-      const std::size_t numerator = elements(shape("numerator"));
-      const std::size_t denominator = elements(shape("denominator"));
+      const std::size_t numerator = size("numerator").elements;
+      const std::size_t denominator = size("denominator").elements;
       if (denominator < 2 || numerator != denominator) {
         error(block_.argument("denominator")->location,
               name_ + " has " + std::to_string(numerator) + " numerator and " + std::to_string(denominator) +
@@ -483,14 +471,14 @@ class BlockCheck {
       return;
     }
     if (block_.type() == "StateFeedback") {
-      expect("k", rows_of(shape("k")), inputs);
+      expect("k", size("k").rows, inputs);
       return;
     }
-    const std::size_t states = rows_of(shape("a"));
+    const std::size_t states = size("a").rows;
     expect("a", states, states);
     if (block_.type() == "StateSpace") {
       expect("b", states, inputs);
-      const std::size_t outputs = rows_of(shape("c"));
+      const std::size_t outputs = size("c").rows;
       expect("c", outputs, states);
       expect("d", outputs, inputs);
       expect("initial", states, 1);
@@ -515,16 +503,10 @@ class BlockCheck {
             "the thesis' filter: a, c, g, q, r; duet design kalman computes a steady-state gain");
       return;
     }
-    const std::size_t noises = shape("g").size() == 2 ? shape("g")[1] : 1;
+    const std::size_t noises = size("g").columns;
     expect("g", states, noises);
     expect("q", noises, noises);
     expect("r", inputs, inputs);
-  }
-
-  static std::size_t elements(const std::vector<std::size_t>& shape) {
-    std::size_t count = 1;
-    for (const std::size_t extent : shape) count *= extent;
-    return count;
   }
 
   // A Code block's ports are declared: the signals must be what the function takes.
