@@ -18,6 +18,8 @@ constexpr std::uint32_t receive_buffer_full = 1U << 1;
 constexpr std::uint32_t transmit_enable = 1U << 0;
 constexpr std::uint32_t receive_enable = 1U << 1;
 constexpr std::uint32_t receive_interrupt_enable = 1U << 3;
+constexpr std::uint32_t transmit_interrupt_enable = 1U << 2;
+constexpr std::uint32_t transmit_interrupt = 1U << 0;
 constexpr std::uint32_t receive_interrupt = 1U << 1;
 constexpr std::uint32_t smallest_baud_divider = 16;  // the UART rejects smaller dividers
 
@@ -39,6 +41,24 @@ void CmsdkUart::write(std::string_view text) const {
 
 void CmsdkUart::enable_receive_interrupt() const {
   register32(base_ + control) = register32(base_ + control) | receive_enable | receive_interrupt_enable;
+}
+
+void CmsdkUart::enable_receiver() const {
+  register32(base_ + control) = register32(base_ + control) | receive_enable;
+}
+
+void CmsdkUart::enable_transmit_interrupt() const {
+  register32(base_ + control) = register32(base_ + control) | transmit_interrupt_enable;
+}
+
+void CmsdkUart::clear_transmit_interrupt() const {
+  register32(base_ + interrupt_status_and_clear) = transmit_interrupt;
+}
+
+bool CmsdkUart::try_write(std::uint8_t byte) const {
+  if ((register32(base_ + state) & transmit_buffer_full) != 0) return false;
+  register32(base_ + data) = byte;
+  return true;
 }
 
 bool CmsdkUart::read(char& byte) const {

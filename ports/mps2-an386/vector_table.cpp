@@ -31,6 +31,7 @@ DUET_WEAK_INTERRUPT_HANDLER(Software4_IRQHandler)
 DUET_WEAK_INTERRUPT_HANDLER(Software5_IRQHandler)
 DUET_WEAK_INTERRUPT_HANDLER(Software6_IRQHandler)
 DUET_WEAK_INTERRUPT_HANDLER(Software7_IRQHandler)
+DUET_WEAK_INTERRUPT_HANDLER(PlantInterrupt_IRQHandler)
 
 namespace {
 
@@ -58,6 +59,7 @@ constexpr auto device_interrupt_handlers = [] {
   static_assert(software.size() == board::software_interrupt_count);
   for (unsigned line = 0; line < software.size(); ++line)
     handlers[board::first_software_interrupt + line] = software[line];
+  for (const board::PlantInterrupt& interrupt : board::plant_interrupts) handlers[interrupt.line] = PlantInterrupt_IRQHandler;
   return handlers;
 }();
 

@@ -1,9 +1,14 @@
 #pragma once
-// The hardware interface generated code calls (docs/MODELS.md, "Hardware blocks"), on QEMU's mps2-an386: pins are
-// the board's user LEDs LED0..LED7 (outputs, bits of the LED register). A pin the board does not have is a compile
-// error where the generated code names it. Each port has a header of this name; CMake chooses which one a build sees.
+// The hardware interface generated code calls (docs/MODELS.md, "Hardware blocks"), on QEMU's mps2-an386. The board's
+// user LEDs LED0..LED7 are pins of its own (bits of the LED register). Everything else a model names is the simulated
+// plant's, reached over the virtual-hardware link (duet/mps2_an386/plant_link.hpp, docs/LINK.md): other pins by
+// name ("gpio:PA12"), the resources ("pwm:TIM1/3", "spi:SPI5", ...) through read() and write(), and the plant's
+// interrupts ("EXTI8", "TIM1", ...) on lines of the board that are wired to nothing. Each port has a header of this
+// name; CMake chooses which one a build sees.
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
 #include "duet/cortex_m/registers.hpp"
@@ -11,24 +16,36 @@
 
 namespace duet::hardware {
 
+// A board pin (mask != 0) or a plant pin, whose resource name is prepared at compile time.
 struct Pin {
-  std::uint32_t mask;
+  std::uint32_t mask = 0;
+  char resource[32]{};
+  std::uint8_t resource_size = 0;
+
+  [[nodiscard]] constexpr std::string_view resource_name() const { return {resource, resource_size}; }
 };
 
 namespace detail {
 // Not constexpr: reaching it in a constant evaluation is the compile error for a pin or interrupt the board lacks.
-inline Pin no_such_pin_on_mps2_an386() { return {0}; }
+inline Pin no_such_pin_on_mps2_an386() { return {}; }
 }  // namespace detail
 
 consteval Pin pin(std::string_view name) {
+  Pin pin;
   if (name.size() == 4 && name.substr(0, 3) == "LED" && name[3] >= '0' && name[3] <= '7') {
-    return {1U << static_cast<unsigned>(name[3] - '0')};
+    pin.mask = 1U << static_cast<unsigned>(name[3] - '0');
+    return pin;
   }
-  return detail::no_such_pin_on_mps2_an386();
+  constexpr std::string_view prefix = "gpio:";
+  if (name.empty() || name.size() > sizeof pin.resource - prefix.size()) return detail::no_such_pin_on_mps2_an386();
+  prefix.copy(pin.resource, prefix.size());
+  name.copy(pin.resource + prefix.size(), name.size());
+  pin.resource_size = static_cast<std::uint8_t>(prefix.size() + name.size());
+  return pin;
 }
 
 // The device interrupt number of an interrupt a model's triggered subsystem names (the vector table's names without
-// _IRQHandler); the executive's slower rates use Software1..4, so models trigger on the UARTs or the dual timer.
+// _IRQHandler, or an interrupt of the simulated plant); the executive's slower rates use Software1..4.
 consteval std::uint16_t interrupt_number(std::string_view name) {
   constexpr struct {
     std::string_view name;
@@ -41,14 +58,32 @@ consteval std::uint16_t interrupt_number(std::string_view name) {
   for (const auto& interrupt : interrupts) {
     if (interrupt.name == name) return static_cast<std::uint16_t>(interrupt.number);
   }
+  for (const mps2_an386::PlantInterrupt& interrupt : mps2_an386::plant_interrupts) {
+    if (interrupt.name == name) return static_cast<std::uint16_t>(interrupt.line);
+  }
   return static_cast<std::uint16_t>(detail::no_such_pin_on_mps2_an386().mask);
 }
 
-inline void gpio_write(Pin pin, bool level) {
-  volatile std::uint32_t& leds = cortex_m::register32(mps2_an386::leds_register);
-  leds = level ? (leds | pin.mask) : (leds & ~pin.mask);
+// The plant's resources: what an image with a plant link defines (apps/balbot/pil). An image without one that
+// reaches them halts with a message saying so.
+void write(std::string_view resource, std::span<const double> values);
+void read(std::string_view resource, std::span<double> values);
+
+inline void gpio_write(const Pin& pin, bool level) {
+  if (pin.mask != 0) {
+    volatile std::uint32_t& leds = cortex_m::register32(mps2_an386::leds_register);
+    leds = level ? (leds | pin.mask) : (leds & ~pin.mask);
+    return;
+  }
+  const double value = level ? 1.0 : 0.0;
+  write(pin.resource_name(), {&value, 1});
 }
 
-inline bool gpio_read(Pin pin) { return (cortex_m::register32(mps2_an386::leds_register) & pin.mask) != 0; }
+inline bool gpio_read(const Pin& pin) {
+  if (pin.mask != 0) return (cortex_m::register32(mps2_an386::leds_register) & pin.mask) != 0;
+  double value = 0.0;
+  read(pin.resource_name(), {&value, 1});
+  return value != 0.0;
+}
 
 }  // namespace duet::hardware

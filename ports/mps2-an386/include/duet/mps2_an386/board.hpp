@@ -3,6 +3,7 @@
 // Numbers from shared/facts/qemu-mps2-an386.md.
 
 #include <cstdint>
+#include <string_view>
 
 namespace duet::mps2_an386 {
 
@@ -21,6 +22,8 @@ inline constexpr std::uintptr_t leds_register = 0x4002'F004;
 inline constexpr std::uintptr_t uart0_base = 0x4000'4000;
 inline constexpr std::uintptr_t uart1_base = 0x4000'5000;
 inline constexpr std::uintptr_t uart2_base = 0x4000'6000;
+inline constexpr std::uintptr_t uart3_base = 0x4000'7000;
+inline constexpr std::uintptr_t uart4_base = 0x4000'9000;
 
 // Device interrupt numbers (exception number minus 16).
 inline constexpr unsigned uart0_receive_interrupt = 0;
@@ -44,10 +47,26 @@ inline constexpr unsigned uart4_transmit_interrupt = 21;
 inline constexpr unsigned first_software_interrupt = 24;
 inline constexpr unsigned software_interrupt_count = 8;
 
-// Brings up what the board hooks need (the console on UART0). Call first in main.
+// Lines wired to nothing that are not software interrupts either: the interrupts a simulated plant raises over the
+// virtual-hardware link (plant_link.hpp), by the names of the hardware they stand for. One handler,
+// PlantInterrupt_IRQHandler, serves them all and asks active_exception() which one it is. The names are those of the
+// STM32MP15's Cortex-M4 interrupts that duet's models use; a model may use at most these nine.
+struct PlantInterrupt {
+  std::string_view name;
+  unsigned line;
+};
+inline constexpr PlantInterrupt plant_interrupts[] = {
+    {"EXTI8", 6},  {"DMA2_Stream2", 7}, {"DMA2_Stream3", 11}, {"DMA2_Stream4", 14}, {"TIM1", 15},
+    {"TIM2", 16},  {"TIM4", 17},        {"TIM5", 22},         {"IPCC_RX1", 23}};
+
+// Brings up what the board hooks need (the console, UART0 unless select_console() chose another). Call first in main.
 void initialize();
 
-// The console's UART (UART0, QEMU's first -serial), for applications that also read from it.
+// Moves the console to UART `number` (0-4, QEMU's -serial options in order), for images whose UART0 carries
+// something else. Call before initialize().
+void select_console(unsigned number);
+
+// The console's UART, for applications that also read from it.
 class CmsdkUart;
 const CmsdkUart& console_uart();
 

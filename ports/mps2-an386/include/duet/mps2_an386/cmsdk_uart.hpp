@@ -18,6 +18,14 @@ class CmsdkUart {
 
   // Enables the receiver and its interrupt, raised when a byte has arrived.
   void enable_receive_interrupt() const;
+  // Enables the receiver alone, for a caller that polls.
+  void enable_receiver() const;
+  // Enables the transmit interrupt, raised when the transmit buffer has taken a byte and has room again.
+  void enable_transmit_interrupt() const;
+  // Puts `byte` in the transmit buffer unless it is full (false). Never waits.
+  [[nodiscard]] bool try_write(std::uint8_t byte) const;
+  // Acknowledges the transmit interrupt: before writing, or when there is nothing more to write.
+  void clear_transmit_interrupt() const;
   // The received byte, if one is waiting; acknowledges the receive interrupt. Interrupt-safe, never waits.
   [[nodiscard]] bool read(char& byte) const;
 

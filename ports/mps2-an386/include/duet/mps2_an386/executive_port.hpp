@@ -39,6 +39,19 @@ class ExecutivePort {
   // Spins: under QEMU's -icount, sleeping in WFI merges timer interrupts.
   void idle() {}
 
+  // Time stands still for the executive between hold_time() and resume_time(): the base timer's countdown and the
+  // cycle counter pause where they are. The plant link holds time while it talks to the simulated plant, so that
+  // the firmware never sees how long the emulator took to reach the plant (plant_link.hpp).
+  struct HeldTimers {
+    bool base_timer = false;  // each true if it was running
+    bool cycle_counter = false;
+  };
+  [[nodiscard]] static HeldTimers hold_time() { return {base_timer.pause(), cycle_counter.pause()}; }
+  static void resume_time(HeldTimers held) {
+    if (held.cycle_counter) cycle_counter.resume();
+    if (held.base_timer) base_timer.resume();
+  }
+
   // The base timer handler's first act: the timer keeps its interrupt raised until it is acknowledged.
   static void acknowledge_base_tick() { base_timer.clear_interrupt(); }
 

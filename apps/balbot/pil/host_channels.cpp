@@ -1,0 +1,219 @@
+// XCP on UART0 and the application channel on UART1: the two RPMsg ttys of the board, which QEMU's first two -serial
+// options stand in for (the bridge opens them as it opens /dev/ttyRPMSG0 and 1). Each UART's receive and transmit
+// interrupts, at the lowest priority, move its bytes both ways: XCP commands are handled there, below every task,
+// and the tasks only queue (DAQ samples, telemetry) and pend the transmit interrupt.
+
+#include <array>
+#include <bit>
+#include <cstring>
+
+#include "duet/app_channel/endpoint.hpp"
+#include "duet/cortex_m/interrupts.hpp"
+#include "duet/mps2_an386/board.hpp"
+#include "duet/mps2_an386/cmsdk_uart.hpp"
+#include "duet/mps2_an386/executive_port.hpp"
+#include "duet/xcp/stream_transport.hpp"
+#include "balbot.hpp"
+#include "balbot_xcp.hpp"
+#include "robot_firmware.hpp"
+
+namespace balbot::pil {
+namespace {
+
+namespace board = duet::mps2_an386;
+namespace cortex_m = duet::cortex_m;
+namespace xcp = duet::xcp;
+namespace app_channel = duet::app_channel;
+
+constexpr unsigned lowest_priority = cortex_m::priority_levels - 1U;
+constexpr std::uint32_t baud_rate = 115'200;  // QEMU ignores it; the board's RPMsg has none
+constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
+
+// A UART that a protocol's transmit() feeds and whose received bytes go to its receive(). Only its interrupts call
+// serve(), all at one priority, so it never runs twice at once.
+template <typename Protocol>
+class UartLine {
+ public:
+  UartLine(board::CmsdkUart uart, unsigned receive_line, unsigned transmit_line)
+      : uart_(uart), receive_line_(receive_line), transmit_line_(transmit_line) {}
+
+  void start() const {
+    uart_.enable_transmitter(board::peripheral_clock_hz, baud_rate);
+    uart_.enable_receive_interrupt();
+    uart_.enable_transmit_interrupt();
+    for (const unsigned line : {receive_line_, transmit_line_}) {
+      cortex_m::set_interrupt_priority(line, lowest_priority);
+      cortex_m::enable_interrupt(line);
+    }
+  }
+  // From a task: there is something to send.
+  void kick() const { cortex_m::set_interrupt_pending(transmit_line_); }
+
+  void serve(Protocol& protocol) {
+    char byte = 0;
+    while (uart_.read(byte)) {
+      const auto received = static_cast<std::uint8_t>(byte);
+      protocol.receive({&received, 1});
+      ++bytes_received_;
+    }
+    uart_.clear_transmit_interrupt();
+    for (;;) {
+      if (sent_ == framed_) {
+        framed_ = protocol.transmit(frames_);
+        sent_ = 0;
+        if (framed_ == 0) return;
+      }
+      if (!uart_.try_write(frames_[sent_])) return;  // the transmit interrupt comes back when there is room
+      ++sent_;
+      ++bytes_sent_;
+    }
+  }
+
+  [[nodiscard]] std::uint32_t bytes_received() const { return bytes_received_; }
+  [[nodiscard]] std::uint32_t bytes_sent() const { return bytes_sent_; }
+
+ private:
+  board::CmsdkUart uart_;
+  unsigned receive_line_;
+  unsigned transmit_line_;
+  std::array<std::uint8_t, 512> frames_{};
+  std::size_t framed_ = 0;
+  std::size_t sent_ = 0;
+  std::uint32_t bytes_received_ = 0;
+  std::uint32_t bytes_sent_ = 0;
+};
+
+// XCP: the model's calibration segment and signals (balbot_xcp.hpp, at the A2L's addresses), an event per task.
+void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
+  const cortex_m::InterruptMask masked;
+  std::memcpy(destination, bytes.data(), bytes.size());
+}
+std::uint32_t timestamp() { return board::ExecutivePort{}.cycles(); }
+
+constexpr std::size_t max_cto = 248;
+constexpr std::size_t max_dto = 248;
+const std::array<xcp::CalibrationSegment, 1> segments{balbot::xcp::calibration_segment()};
+const std::array<xcp::MemoryRegion, 1> regions{balbot::xcp::signals_region()};
+std::array<xcp::DaqList, 8> daq_lists{};
+std::array<xcp::Odt, 64> odts{};
+std::array<xcp::OdtEntry, 512> odt_entries{};
+std::array<std::uint8_t, 16 * 1024> xcp_queue_storage{};
+std::array<std::uint8_t, 256> download_buffer{};
+xcp::TransmitQueue xcp_queue{xcp_queue_storage, interrupt_lock};
+const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions},
+                                                .segments = segments,
+                                                .max_cto = max_cto,
+                                                .max_dto = max_dto,
+                                                .identification = "balbot",
+                                                .write_atomically = write_with_interrupts_masked,
+                                                .download_buffer = download_buffer,
+                                                .events = balbot::xcp::events,
+                                                .daq = {daq_lists, odts, odt_entries},
+                                                .queue = &xcp_queue,
+                                                .timestamp = timestamp,
+                                                .timestamp_unit = 1,  // 10 ns: the timer's 40 ns are 4 of them
+                                                .timestamp_ticks = 4};
+xcp::Slave slave{xcp_configuration};
+std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
+std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
+xcp::StreamTransport xcp_transport{slave,      xcp_queue,          xcp::ethernet_framing, xcp_decoder_buffer,
+                                   max_cto,    xcp_packet_buffer};
+UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base}, board::uart0_receive_interrupt,
+                                        board::uart0_transmit_interrupt};
+
+// The application channel: what the thesis' Linux application shows (theta, battery voltage, distance) and sets
+// (the PID's P, I, D), as the model sends and takes them.
+struct RobotMessage {
+  float theta;
+  float battery;
+  float distance;
+};
+RobotMessage telemetry{};
+struct Gains {
+  float p;
+  float i;
+  float d;
+};
+Gains gains{balbot::reference_parameters.P, balbot::reference_parameters.I, balbot::reference_parameters.D};
+Gains gains_sent = gains;  // what the model was last told
+std::uint32_t telemetry_sample = 0;
+
+const app_channel::Item telemetry_items[] = {app_channel::item("theta", "deg", telemetry.theta, -90, 90),
+                                             app_channel::item("battery", "V", telemetry.battery, 0, 12.6),
+                                             app_channel::item("distance", "cm", telemetry.distance, 0, 400)};
+const app_channel::Item gain_items[] = {app_channel::item("P", "", gains.p, 0, 1),
+                                        app_channel::item("I", "", gains.i, 0, 1),
+                                        app_channel::item("D", "", gains.d, 0, 1)};
+const app_channel::Application application{"balbot", 10'000, telemetry_items, gain_items};
+std::array<std::uint8_t, 4096> application_queue_storage{};
+xcp::TransmitQueue application_queue{application_queue_storage, interrupt_lock};
+std::array<std::uint8_t, app_channel::decoder_buffer_size> application_decoder_buffer{};
+std::array<std::uint8_t, app_channel::max_packet> application_packet_buffer{};
+app_channel::Endpoint endpoint{application, application_queue, interrupt_lock, application_decoder_buffer,
+                               application_packet_buffer};
+UartLine<app_channel::Endpoint> application_line{board::CmsdkUart{board::uart1_base}, board::uart1_receive_interrupt,
+                                                 board::uart1_transmit_interrupt};
+
+constexpr unsigned gains_interrupt_line = duet::hardware::interrupt_number("IPCC_RX1");
+
+// A set from Linux changed the gains: the model hears of it as the thesis' robot does, through IPCC_RX1.
+void tell_the_model_of_new_gains() {
+  const bool changed = std::bit_cast<std::uint32_t>(gains.p) != std::bit_cast<std::uint32_t>(gains_sent.p) ||
+                       std::bit_cast<std::uint32_t>(gains.i) != std::bit_cast<std::uint32_t>(gains_sent.i) ||
+                       std::bit_cast<std::uint32_t>(gains.d) != std::bit_cast<std::uint32_t>(gains_sent.d);
+  if (!changed) return;
+  {
+    const cortex_m::InterruptMask masked;
+    gains_sent = gains;
+  }
+  cortex_m::set_interrupt_pending(gains_interrupt_line);
+}
+
+template <typename T>
+void bytes_to(std::span<const double> bytes, T& value) {
+  std::array<std::uint8_t, sizeof(T)> raw{};
+  for (std::size_t k = 0; k < raw.size() && k < bytes.size(); ++k) raw[k] = static_cast<std::uint8_t>(bytes[k]);
+  std::memcpy(&value, raw.data(), raw.size());
+}
+
+}  // namespace
+
+void start_host_channels() {
+  xcp_line.start();
+  application_line.start();
+}
+
+void on_task_finished(std::size_t task) {
+  slave.on_event(static_cast<std::uint16_t>(task));
+  if (xcp_queue.free_bytes() != xcp_queue.capacity()) xcp_line.kick();
+}
+
+void send_to_linux(std::span<const double> message_bytes) {
+  bytes_to(message_bytes, telemetry);
+  endpoint.publish(telemetry_sample++);
+  application_line.kick();
+}
+
+void receive_from_linux(std::span<double> message_bytes) {
+  std::array<std::uint8_t, sizeof(Gains)> raw{};
+  {
+    const cortex_m::InterruptMask masked;
+    std::memcpy(raw.data(), &gains_sent, raw.size());
+  }
+  for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0.0;
+}
+
+HostChannelCounters host_channel_counters() {
+  return {xcp_line.bytes_received(), xcp_line.bytes_sent(), application_line.bytes_received(),
+          application_line.bytes_sent(), endpoint.samples_dropped()};
+}
+
+}  // namespace balbot::pil
+
+extern "C" void UART0_RX_IRQHandler() { balbot::pil::xcp_line.serve(balbot::pil::xcp_transport); }
+extern "C" void UART0_TX_IRQHandler() { balbot::pil::xcp_line.serve(balbot::pil::xcp_transport); }
+extern "C" void UART1_RX_IRQHandler() {
+  balbot::pil::application_line.serve(balbot::pil::endpoint);
+  balbot::pil::tell_the_model_of_new_gains();
+}
+extern "C" void UART1_TX_IRQHandler() { balbot::pil::application_line.serve(balbot::pil::endpoint); }

@@ -1,0 +1,122 @@
+#pragma once
+// The firmware's console (UART3): one line per fact, `key=value` words, so that `duet pil` and tests read them.
+//
+//   duet-pil model=balbot base_period_ns=1000000 tasks=11 duration_ms=10000       at start (0: until stopped)
+//   duet-status time_s=1.000 ticks=1000 busy_ppm=123456 overruns=0              every second of model time
+//   duet-task index=0 name=rate_1 activations=1000 overruns=0 min_cycles=... mean_cycles=... max_cycles=...
+//   duet-channels xcp_received=... xcp_sent=... application_received=... application_sent=... telemetry_dropped=...
+//   duet-end reason=final_tick ticks=10001 overruns=0 link=ok                  once, when the model stopped
+//
+// A task line per task follows every status line, then the channels' line. Cycles count the board's 25 MHz timer
+// (40 ns), which the plant link holds while it talks to the plant: net execution times, without preemption.
+
+#include <cstdint>
+#include <string_view>
+
+#include "duet/base/text_buffer.hpp"
+#include "duet/cortex_m/board_hooks.hpp"
+#include "duet/mps2_an386/plant_link.hpp"
+#include "duet/rt/executive.hpp"
+#include "robot_firmware.hpp"
+
+namespace balbot::pil {
+
+class StatusReport {
+ public:
+  explicit StatusReport(const duet::rt::ModelDescription& model) : model_(model) {}
+
+  void started(std::uint64_t duration_ms) {
+    line_.clear();
+    line_.append("duet-pil model=").append(model_.name).append(" base_period_ns=").append(model_.base_period_ns);
+    line_.append(" tasks=").append(model_.tasks.size()).append(" duration_ms=").append(duration_ms);
+    emit();
+    ticks_per_report_ = 1'000'000'000U / model_.base_period_ns;
+    next_report_ = ticks_per_report_;
+  }
+
+  // From the idle loop: the report of every second of model time that has passed.
+  template <typename Executive>
+  void between_ticks(const Executive& executive) {
+    if (executive.ticks() < next_report_) return;
+    next_report_ += ticks_per_report_;
+    status(executive);
+  }
+
+  template <typename Executive>
+  void ended(const Executive& executive, const duet::mps2_an386::PlantLink& link) {
+    status(executive);
+    line_.clear();
+    line_.append("duet-end reason=").append(reason(executive.stop_reason())).append(" ticks=");
+    line_.append(executive.ticks()).append(" overruns=").append(total_overruns(executive));
+    line_.append(" link=").append(link.ok() ? std::string_view{"ok"} : link.error());
+    emit();
+  }
+
+  template <typename Executive>
+  std::uint64_t total_overruns(const Executive& executive) const {
+    std::uint64_t overruns = 0;
+    for (std::size_t task = 0; task < model_.tasks.size(); ++task) overruns += executive.statistics(task).overruns;
+    return overruns;
+  }
+
+ private:
+  template <typename Executive>
+  void status(const Executive& executive) {
+    const std::uint64_t ticks = executive.ticks();
+    const std::uint64_t milliseconds = ticks * model_.base_period_ns / 1'000'000U;
+    line_.clear();
+    line_.append("duet-status time_s=").append(milliseconds / 1000U).append('.');
+    append_three_digits(milliseconds % 1000U);
+    line_.append(" ticks=").append(ticks).append(" busy_ppm=").append(executive.load().busy_ppm());
+    line_.append(" overruns=").append(total_overruns(executive));
+    emit();
+    for (std::size_t task = 0; task < model_.tasks.size(); ++task) {
+      const duet::rt::TaskStatistics& statistics = executive.statistics(task);
+      line_.clear();
+      line_.append("duet-task index=").append(task).append(" name=");
+      for (const char character : model_.tasks[task].name) line_.append(character == ' ' ? '_' : character);
+      line_.append(" activations=").append(statistics.activations).append(" overruns=").append(statistics.overruns);
+      line_.append(" min_cycles=").append(statistics.activations == 0 ? 0U : statistics.min_cycles);
+      line_.append(" mean_cycles=").append(statistics.mean_cycles());
+      line_.append(" max_cycles=").append(statistics.max_cycles);
+      emit();
+    }
+    const HostChannelCounters counters = host_channel_counters();
+    line_.clear();
+    line_.append("duet-channels xcp_received=").append(counters.xcp_bytes_received);
+    line_.append(" xcp_sent=").append(counters.xcp_bytes_sent);
+    line_.append(" application_received=").append(counters.application_bytes_received);
+    line_.append(" application_sent=").append(counters.application_bytes_sent);
+    line_.append(" telemetry_dropped=").append(counters.telemetry_dropped);
+    emit();
+  }
+
+  void append_three_digits(std::uint64_t value) {
+    if (value < 100U) line_.append('0');
+    if (value < 10U) line_.append('0');
+    line_.append(value);
+  }
+
+  static std::string_view reason(duet::rt::StopReason reason) {
+    switch (reason) {
+      case duet::rt::StopReason::none: return "none";
+      case duet::rt::StopReason::model: return "model";
+      case duet::rt::StopReason::external: return "link";
+      case duet::rt::StopReason::final_tick: return "final_tick";
+      case duet::rt::StopReason::overrun: return "overrun";
+    }
+    return "unknown";
+  }
+
+  void emit() {
+    line_.append('\n');
+    duet::cortex_m::console_write(line_.view());
+  }
+
+  const duet::rt::ModelDescription& model_;
+  duet::TextBuffer<240> line_;
+  std::uint64_t ticks_per_report_ = 1000;
+  std::uint64_t next_report_ = 1000;
+};
+
+}  // namespace balbot::pil

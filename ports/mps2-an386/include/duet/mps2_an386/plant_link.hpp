@@ -1,0 +1,69 @@
+#pragma once
+// The firmware's end of the virtual-hardware link (docs/LINK.md) under QEMU: the model's hardware calls become
+// WRITE and READ frames to a simulated plant in a host program, and each base tick a TICK, during which the plant's
+// interrupts (INTERRUPT frames) run the model's interrupt tasks.
+//
+// The frames travel through two named pipes of the host that semihosting opens, reads and writes, a frame per call:
+// QEMU's UART model moves one byte per turn of its main loop (a UART link ran the robot at a sixth of real time), while
+// a semihosting call blocks the core until the host's read or write returns, which takes no emulated time.
+//
+// While it talks to the plant the link masks interrupts and holds the executive's time (ExecutivePort::hold_time),
+// so the firmware sees its plant as it would see registers: the instructions that encode and decode frames are not
+// counted in the execution times the executive measures. How fast the plant answers (at once: lock-step; at the
+// wall clock's pace: real time) is the plant's business; the firmware's run is the same either way.
+//
+// Freestanding. A failure (garbage, an ERROR from the plant, the pipe closed) is kept: from then on the calls do
+// nothing, reads give zeros, and error() says what happened.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "duet/base/text_buffer.hpp"
+#include "duet/link/frame.hpp"
+#include "duet/link/frame_decoder.hpp"
+
+namespace duet::mps2_an386 {
+
+class PlantLink {
+ public:
+  // Opens the pipes (paths NUL-terminated beyond their views; the plant creates them and opens its ends), then the
+  // session: HELLO (lock-step, the model's base period) and the plant's HELLO_OK.
+  bool connect(std::string_view to_plant, std::string_view from_plant, std::uint32_t base_period_ns);
+
+  void write(std::string_view resource, std::span<const double> values);
+  void read(std::string_view resource, std::span<double> values);
+
+  // Moves the plant to `time_s`. Each interrupt it raises on the way pends that interrupt's line
+  // (board.hpp's plant_interrupts) and lets it run, with time running, before the plant goes on: the task must be
+  // more urgent than the caller (the base tick's handler).
+  void tick(double time_s);
+
+  // Ends the session.
+  void bye();
+
+  [[nodiscard]] bool ok() const { return error_.view().empty(); }
+  [[nodiscard]] std::string_view error() const { return error_.view(); }
+
+ private:
+  // The largest frame the plant sends to this firmware: VALUES of 127 doubles; a longer one is refused.
+  static constexpr std::size_t max_received_payload = 1024;
+
+  class TimeHeld;
+  void send(std::span<const std::uint8_t> frame);
+  // Waits for the plant's next frame; false (and the session failed) on garbage, an ERROR or the pipe's end.
+  bool receive();
+  bool read_exactly(std::span<std::uint8_t> bytes);
+  bool expect(link::FrameKind kind);
+  bool raise(std::string_view name, TimeHeld& held);
+  void fail(std::string_view what, std::string_view detail = {});
+
+  int to_plant_ = -1;
+  int from_plant_ = -1;
+  link::BasicFrameDecoder<max_received_payload> decoder_;
+  std::uint8_t frame_[max_received_payload + link::header_size]{};
+  TextBuffer<160> error_;
+};
+
+}  // namespace duet::mps2_an386

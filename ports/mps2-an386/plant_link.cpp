@@ -1,0 +1,179 @@
+#include "duet/mps2_an386/plant_link.hpp"
+
+#include "duet/cortex_m/interrupts.hpp"
+#include "duet/cortex_m/semihosting.hpp"
+#include "duet/mps2_an386/board.hpp"
+#include "duet/mps2_an386/executive_port.hpp"
+
+namespace duet::mps2_an386 {
+namespace {
+
+using link::FrameKind;
+namespace semihosting = cortex_m::semihosting;
+
+}  // namespace
+
+// Interrupts masked and the executive's time held for as long as it exists.
+class PlantLink::TimeHeld {
+ public:
+  TimeHeld() : saved_primask_(cortex_m::mask_interrupts()), timers_(ExecutivePort::hold_time()) {}
+  ~TimeHeld() {
+    ExecutivePort::resume_time(timers_);
+    cortex_m::restore_interrupts(saved_primask_);
+  }
+  TimeHeld(const TimeHeld&) = delete;
+  TimeHeld& operator=(const TimeHeld&) = delete;
+
+  // Lets time run and interrupts in while `run` does, then holds them again.
+  template <typename Function>
+  void release_while(Function run) {
+    ExecutivePort::resume_time(timers_);
+    cortex_m::enable_interrupts();
+    run();
+    cortex_m::disable_interrupts();
+    timers_ = ExecutivePort::hold_time();
+  }
+
+ private:
+  std::uint32_t saved_primask_;
+  ExecutivePort::HeldTimers timers_;
+};
+
+bool PlantLink::connect(std::string_view to_plant, std::string_view from_plant, std::uint32_t base_period_ns) {
+  const TimeHeld held;
+  // The plant holds its ends open, so neither open waits; this order matches the plant's in any case.
+  to_plant_ = semihosting::open(to_plant, semihosting::FileMode::write_binary);
+  from_plant_ = semihosting::open(from_plant, semihosting::FileMode::read_binary);
+  if (to_plant_ < 0 || from_plant_ < 0) {
+    error_.append("cannot open the pipes to and from the plant: ").append(to_plant).append(", ").append(from_plant);
+    return false;
+  }
+  send(link::encode_hello(frame_, {link::protocol_version, link::LinkMode::lock_step, base_period_ns}));
+  if (!expect(FrameKind::hello_ok)) return false;
+  link::HelloOk hello_ok;
+  if (link::parse(decoder_.payload(), hello_ok) != link::FrameError::none || hello_ok.version != link::protocol_version) {
+    fail("the plant answered HELLO with a bad HELLO_OK");
+  }
+  return ok();
+}
+
+void PlantLink::write(std::string_view resource, std::span<const double> values) {
+  if (!ok()) return;
+  const TimeHeld held;
+  const std::span<const std::uint8_t> frame = link::encode_write(frame_, resource, values);
+  if (frame.empty()) return fail("a WRITE too long for the link's buffer: ", resource);
+  send(frame);
+}
+
+void PlantLink::read(std::string_view resource, std::span<double> values) {
+  for (double& value : values) value = 0.0;
+  if (!ok()) return;
+  const TimeHeld held;
+  const std::span<const std::uint8_t> frame =
+      link::encode_read(frame_, resource, static_cast<std::uint16_t>(values.size()));
+  if (frame.empty() || values.size() > link::max_read_values) return fail("a READ too long for the link: ", resource);
+  send(frame);
+  if (!expect(FrameKind::values)) return;
+  link::Values answer;
+  if (link::parse(decoder_.payload(), answer) != link::FrameError::none || answer.values.size() != values.size()) {
+    return fail("the plant answered a READ with the wrong number of values: ", resource);
+  }
+  answer.values.copy_to(values);
+}
+
+void PlantLink::tick(double time_s) {
+  if (!ok()) return;
+  TimeHeld held;
+  send(link::encode_tick(frame_, time_s));
+  while (receive()) {
+    if (decoder_.kind() == FrameKind::tick_done) return;
+    link::Interrupt interrupt;
+    if (decoder_.kind() != FrameKind::interrupt ||
+        link::parse(decoder_.payload(), interrupt) != link::FrameError::none) {
+      return fail("the plant sent something else than INTERRUPT or TICK_DONE during a TICK");
+    }
+    if (!raise(interrupt.name, held)) return;
+    send(link::encode_empty(frame_, FrameKind::interrupt_done));
+  }
+}
+
+void PlantLink::bye() {
+  if (!ok()) return;
+  const TimeHeld held;
+  send(link::encode_empty(frame_, FrameKind::bye));
+}
+
+// Lets the interrupt's task run: time resumes and interrupts are unmasked for as long as it takes, which is at once
+// and to its end, since the task is more urgent than whoever ticks. The task's own READ and WRITE frames go out
+// meanwhile, as the protocol wants them: before INTERRUPT_DONE.
+bool PlantLink::raise(std::string_view name, TimeHeld& held) {
+  for (const PlantInterrupt& interrupt : plant_interrupts) {
+    if (interrupt.name != name) continue;
+    held.release_while([line = interrupt.line] {
+      cortex_m::set_interrupt_pending(line);
+      asm volatile("isb" ::: "memory");  // the pended interrupt is taken here
+    });
+    return true;
+  }
+  fail("the plant raised an interrupt this board has no line for: ", name);
+  return false;
+}
+
+void PlantLink::send(std::span<const std::uint8_t> frame) {
+  if (to_plant_ < 0) return;
+  if (semihosting::write(to_plant_, frame) != frame.size()) {
+    semihosting::close(to_plant_);
+    to_plant_ = -1;  // no ERROR frame can follow
+    fail("the plant closed its pipe");
+  }
+}
+
+bool PlantLink::read_exactly(std::span<std::uint8_t> bytes) {
+  while (!bytes.empty()) {
+    const std::size_t got = semihosting::read(from_plant_, bytes);
+    if (got == 0) {
+      fail("the plant closed its pipe");
+      return false;
+    }
+    bytes = bytes.subspan(got);
+  }
+  return true;
+}
+
+bool PlantLink::receive() {
+  std::uint8_t header[link::header_size];
+  if (!read_exactly(header)) return false;
+  link::DecodeStatus status = decoder_.feed(header).status;
+  if (status == link::DecodeStatus::need_more) {
+    const std::span<std::uint8_t> payload = std::span{frame_}.first(decoder_.announced());
+    if (!read_exactly(payload)) return false;
+    status = decoder_.feed(payload).status;
+  }
+  if (status != link::DecodeStatus::frame) {
+    fail("the plant sent a bad frame: ", link::describe(decoder_.error()));
+    return false;
+  }
+  if (decoder_.kind() == FrameKind::error) {
+    link::ErrorText text;
+    static_cast<void>(link::parse(decoder_.payload(), text));
+    fail("the plant reported an error: ", text.text);
+    return false;
+  }
+  return true;
+}
+
+bool PlantLink::expect(FrameKind kind) {
+  if (!receive()) return false;
+  if (decoder_.kind() == kind) return true;
+  fail("the plant sent an unexpected frame: ", link::kind_name(decoder_.kind()));
+  return false;
+}
+
+void PlantLink::fail(std::string_view what, std::string_view detail) {
+  if (!ok()) return;
+  error_.append(what).append(detail);
+  // Tell the plant, so that it ends the session instead of waiting for a frame that will not come.
+  send(link::encode_error(frame_, error_.view()));
+}
+
+}  // namespace duet::mps2_an386
