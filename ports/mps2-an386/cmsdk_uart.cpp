@@ -43,10 +43,6 @@ void CmsdkUart::enable_receive_interrupt() const {
   register32(base_ + control) = register32(base_ + control) | receive_enable | receive_interrupt_enable;
 }
 
-void CmsdkUart::enable_receiver() const {
-  register32(base_ + control) = register32(base_ + control) | receive_enable;
-}
-
 void CmsdkUart::enable_transmit_interrupt() const {
   register32(base_ + control) = register32(base_ + control) | transmit_interrupt_enable;
 }

@@ -2,104 +2,27 @@
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cmath>
-#include <fstream>
-#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
-#include <vector>
 
 #include "duet/link/serve.hpp"
 #include "duet/link/tcp.hpp"
-#include "duet/model/simulation.hpp"
-#include "duet/plant/balbot/balbot_plant.hpp"
-#include "duet/plant/balbot/balbot_scenario.hpp"
-#include "duet/plant/plant.hpp"
-#include "duet/plot/figure.hpp"
+#include "host_port_validator.hpp"
+#include "plant_choice.hpp"
+#include "recording_plant.hpp"
 
 namespace duet::cli {
 namespace {
 
 struct ServeOptions {
-  std::string name;
-  std::string scenario;
-  std::uint64_t seed = 1;
-  bool seed_given = false;
+  PlantChoice plant;
   std::string listen = "127.0.0.1:" + std::to_string(link::default_port);
   bool once = false;
   double timeout_s = 10;
-  std::string csv;   // the plant's observables, a row per TICK, written when a session ends
-  std::string plot;  // the same as an SVG plot
+  RecordingFiles recording;  // the plant's observables, a row per TICK, written when a session ends
 };
-
-// A plant that records what the plant behind it shows of itself (Plant::observables) once per TICK, after it
-// advanced: the plant's own view of a session, whatever the firmware measures. Without `record` it only passes the
-// calls on.
-class RecordingPlant : public plant::Plant {
- public:
-  RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record)
-      : behind_(std::move(behind)), record_(record), observables_(behind_->observables()), now_(observables_.size()) {
-    for (const Observable& observable : observables_) {
-      recording_.names.push_back(observable.name);
-      recording_.units.push_back(observable.unit);
-    }
-    recording_.columns.resize(observables_.size());
-  }
-
-  void advance(double time_s, const plant::RaiseInterrupt& raise) override {
-    behind_->advance(time_s, raise);
-    if (!record_) return;
-    if (recording_.time_s.size() >= most_rows_) {
-      truncated_ = true;
-      return;
-    }
-    behind_->observe(now_);
-    recording_.time_s.push_back(time_s);
-    for (std::size_t k = 0; k < now_.size(); ++k) recording_.columns[k].push_back(now_[k]);
-  }
-  void write(std::string_view resource, std::span<const double> values) override { behind_->write(resource, values); }
-  void read(std::string_view resource, std::span<double> values) override { behind_->read(resource, values); }
-  [[nodiscard]] std::vector<Observable> observables() const override { return observables_; }
-  void observe(std::span<double> values) const override { behind_->observe(values); }
-
-  [[nodiscard]] const model::Recording& recording() const { return recording_; }
-  // Whether the session went on past what is kept in memory (the recording then holds its beginning).
-  [[nodiscard]] bool truncated() const { return truncated_; }
-
- private:
-  std::unique_ptr<plant::Plant> behind_;
-  bool record_;
-  std::vector<Observable> observables_;
-  std::vector<double> now_;
-  model::Recording recording_;
-  // A session in real time may run for hours: keep at most 100 million values (800 MB), as duet sim does.
-  std::size_t most_rows_ = 100'000'000 / (observables_.size() + 1);
-  bool truncated_ = false;
-};
-
-using PlantMaker = std::function<std::unique_ptr<plant::Plant>()>;
-
-// How each connection gets a fresh plant, so that every run starts alike; checked once before listening.
-Result<PlantMaker> plant_maker(const ServeOptions& options) {
-  if (!options.scenario.empty()) {
-    if (options.name != "balbot") {
-      return Failure{"--scenario is for the balbot plant; plant '" + options.name + "' takes none"};
-    }
-    auto scenario = plant::load_balbot_scenario(options.scenario);
-    if (!scenario) return Failure{scenario.error()};
-    plant::BalbotScenario chosen = std::move(scenario).value();
-    if (options.seed_given) chosen.seed = options.seed;
-    return PlantMaker{[chosen] { return std::unique_ptr<plant::Plant>{plant::make_balbot_plant(chosen)}; }};
-  }
-  auto made = plant::make_plant(options.name, options.seed);
-  if (!made) return Failure{made.error()};
-  return PlantMaker{[name = options.name, seed = options.seed] {
-    auto plant = plant::make_plant(name, seed);
-    return plant ? std::move(plant).value() : nullptr;
-  }};
-}
 
 std::string describe(const link::ServeSummary& summary) {
   const bool lock_step = summary.hello.mode == link::LinkMode::lock_step;
@@ -111,22 +34,6 @@ std::string describe(const link::ServeSummary& summary) {
 
 constexpr std::string_view prefix = "duet plant serve: ";
 
-// Whether `path` can be written (it is created, empty): checked before listening rather than after a session.
-bool writable(const std::string& path, Streams streams) {
-  if (path.empty()) return true;
-  const std::ofstream file{path};
-  if (!file) streams.err << prefix << "cannot write " << path << '\n';
-  return static_cast<bool>(file);
-}
-
-bool write_file(const std::string& path, const std::string& text, Streams streams) {
-  std::ofstream file{path};
-  file << text;
-  file.close();
-  if (!file) streams.err << prefix << "cannot write " << path << '\n';
-  return static_cast<bool>(file);
-}
-
 // The session's recording, as --csv and --plot ask.
 bool write_recording(const ServeOptions& options, const RecordingPlant& plant, const std::string& peer,
                      Streams streams) {
@@ -134,24 +41,22 @@ bool write_recording(const ServeOptions& options, const RecordingPlant& plant, c
   if (plant.truncated()) {
     streams.err << prefix << peer << ": the recording holds the first " << recording.time_s.size() << " ticks only\n";
   }
-  bool written = true;
-  if (!options.csv.empty()) written = write_file(options.csv, model::to_csv(recording), streams) && written;
-  if (!options.plot.empty()) {
-    plot::Figure figure{"plant " + options.name + ", served to " + peer, "s", recording.time_s, {}};
-    for (std::size_t k = 0; k < recording.names.size(); ++k)
-      figure.series.push_back({recording.names[k], recording.units[k], recording.columns[k]});
-    written = write_file(options.plot, plot::to_svg(figure), streams) && written;
-  }
-  return written;
+  const Status written =
+      write_recording_files(recording, options.recording, "plant " + options.plant.name + ", served to " + peer);
+  if (!written) streams.err << prefix << written.error() << '\n';
+  return written.ok();
 }
 
 ExitCode serve_plant(const ServeOptions& options, Streams streams) {
-  auto maker = plant_maker(options);
-  if (!maker) {
-    streams.err << prefix << maker.error() << '\n';
+  auto chosen = choose_plant(options.plant);
+  if (!chosen) {
+    streams.err << prefix << chosen.error() << '\n';
     return ExitCode::failure;
   }
-  if (!writable(options.csv, streams) || !writable(options.plot, streams)) return ExitCode::failure;
+  if (Status created = create_recording_files(options.recording); !created) {
+    streams.err << prefix << created.error() << '\n';
+    return ExitCode::failure;
+  }
   auto address = link::parse_host_port(options.listen);  // checked by the option's validator already
   if (!address) {
     streams.err << prefix << address.error() << '\n';
@@ -165,7 +70,7 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
   const link::Timeout session_timeout =
       options.timeout_s == 0 ? link::no_timeout
                              : link::Timeout{static_cast<link::Timeout::rep>(std::ceil(options.timeout_s * 1000))};
-  streams.out << "plant " << options.name << " listening on " << link::to_string(listener.value().address())
+  streams.out << "plant " << options.plant.name << " listening on " << link::to_string(listener.value().address())
               << std::endl;  // a line scripts wait for: flushed now
   for (;;) {
     auto accepted = listener.value().accept(link::no_timeout, session_timeout);
@@ -173,7 +78,7 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
       streams.err << prefix << accepted.error() << '\n';
       return ExitCode::failure;
     }
-    RecordingPlant plant{maker.value()(), !options.csv.empty() || !options.plot.empty()};
+    RecordingPlant plant{chosen.value().make(), !options.recording.csv.empty() || !options.recording.plot.empty()};
     auto served = link::serve(plant, *accepted.value().stream);
     if (served) {
       streams.out << "served " << accepted.value().peer << ": " << describe(served.value()) << std::endl;
@@ -186,12 +91,6 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
   }
 }
 
-std::string plant_list() {
-  std::string text;
-  for (const std::string& name : plant::plant_names()) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 }  // namespace
 
 Action define_plant_command(CLI::App& command) {
@@ -199,29 +98,14 @@ Action define_plant_command(CLI::App& command) {
   command.require_subcommand(1);
   CLI::App* serve = command.add_subcommand(
       "serve", "Serve a simulated plant over the virtual-hardware link to firmware that connects over TCP");
-  serve->add_option("name", options->name, "The plant: " + plant_list())->required()->type_name("NAME");
-  serve->add_option("--scenario", options->scenario, "balbot: the scenario file (YAML, src/plant/balbot/README.md)")
-      ->type_name("FILE");
-  serve
-      ->add_option_function<std::uint64_t>(
-          "--seed",
-          [options](const std::uint64_t& seed) {
-            options->seed = seed;
-            options->seed_given = true;
-          },
-          "Seed of the plant's noise: the same seed, the same run (default 1, or the scenario's)")
-      ->type_name("UINT");
+  serve->add_option("name", options->plant.name, "The plant: " + plant_list())->required()->type_name("NAME");
+  add_scenario_and_seed_options(*serve, options->plant);
   serve
       ->add_option("--listen", options->listen,
                    "HOST:PORT to listen on; port 0 takes a free port (the line printed says which)")
       ->capture_default_str()
       ->type_name("HOST:PORT")
-      ->check(CLI::Validator(
-          [](const std::string& text) {
-            auto parsed = link::parse_host_port(text);
-            return parsed ? std::string{} : parsed.error();
-          },
-          ""));
+      ->check(host_port_validator());
   serve->add_flag("--once", options->once, "Serve one firmware, then exit (with 1 if that session failed)");
   serve
       ->add_option("--timeout", options->timeout_s,
@@ -230,10 +114,10 @@ Action define_plant_command(CLI::App& command) {
       ->type_name("S")
       ->check(CLI::Range(0.0, 1e6));
   serve
-      ->add_option("--csv", options->csv,
+      ->add_option("--csv", options->recording.csv,
                    "Write the plant's own quantities, a row per TICK, to FILE when a session ends (the last session's)")
       ->type_name("FILE");
-  serve->add_option("--plot", options->plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
+  serve->add_option("--plot", options->recording.plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
   return [options](Streams streams) { return serve_plant(*options, streams); };
 }
 

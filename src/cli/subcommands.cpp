@@ -5,6 +5,7 @@
 #include "design_command.hpp"
 #include "gen_command.hpp"
 #include "model_command.hpp"
+#include "pil_command.hpp"
 #include "plant_command.hpp"
 #include "sched_command.hpp"
 #include "sim_command.hpp"
@@ -33,6 +34,8 @@ constexpr Subcommand table[] = {
     {"design", "Design LQR and steady-state Kalman gains and print them as model parameters", define_design_command},
     {"plant", "Serve a simulated plant to firmware in another process over the virtual-hardware link",
      define_plant_command},
+    {"pil", "Processor in the loop: firmware on QEMU's emulated Cortex-M4 against a simulated plant, with the bridge",
+     define_pil_command},
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "duet/link/channel.hpp"
+#include "duet/link/pacer.hpp"
 
 namespace duet::link {
 namespace {
@@ -13,26 +14,30 @@ namespace {
 // One firmware's session: a handler per kind of frame the firmware may send.
 class Server {
  public:
-  Server(plant::Plant& plant, Stream& stream)
-      : plant_(plant), channel_(stream, "the firmware"), raise_([this](std::string_view name) { raise(name); }) {}
+  Server(plant::Plant& plant, Stream& stream, const ServeOptions& options, ServeSummary& summary)
+      : plant_(plant),
+        channel_(stream, "the firmware"),
+        options_(options),
+        raise_([this](std::string_view name) { raise(name); }),
+        summary_(summary) {}
 
-  Result<ServeSummary> run() {
-    if (Status greeted = greet(); !greeted) return Failure{greeted.error()};
+  Status run() {
+    if (Status greeted = greet(); !greeted) return greeted;
     constexpr std::string_view awaiting = "WRITE, READ, TICK or BYE";
     for (;;) {
       auto received = channel_.receive(awaiting);
       if (!received) return Failure{received.error()};
-      if (!received.value()) return summary_;  // the firmware went between frames: a run may end so
+      if (!received.value()) return done();  // the firmware went between frames: a run may end so
       const ReceivedFrame frame = *received.value();
       Status handled = done();
       switch (frame.kind) {
         case FrameKind::write: handled = on_write(frame.payload); break;
         case FrameKind::read: handled = on_read(frame.payload); break;
         case FrameKind::tick: handled = on_tick(frame.payload); break;
-        case FrameKind::bye: summary_.said_bye = true; return summary_;
+        case FrameKind::bye: summary_.said_bye = true; return done();
         default: handled = unexpected(frame, awaiting); break;
       }
-      if (!handled) return Failure{handled.error()};
+      if (!handled) return handled;
     }
   }
 
@@ -87,6 +92,12 @@ class Server {
     (void)parse(payload, tick);  // the decoder checked its one field's length
     if (!std::isfinite(tick.time_s)) return channel_.fail("the firmware sent a TICK whose time is not a number");
     ++summary_.ticks;
+    summary_.last_tick_s = tick.time_s;
+    if (options_.paced) {
+      pacer_.wait_until(tick.time_s);
+      summary_.late_ticks = pacer_.late();
+      summary_.worst_lateness = pacer_.worst_lateness();
+    }
     plant_.advance(tick.time_s, raise_);
     if (failure_) return *failure_;
     return channel_.send_empty(FrameKind::tick_done);
@@ -135,14 +146,25 @@ class Server {
 
   plant::Plant& plant_;
   Channel channel_;
+  ServeOptions options_;
+  Pacer pacer_;
   plant::RaiseInterrupt raise_;
   std::vector<double> values_;
-  ServeSummary summary_;
+  ServeSummary& summary_;
   std::optional<Failure> failure_;
 };
 
 }  // namespace
 
-Result<ServeSummary> serve(plant::Plant& plant, Stream& stream) { return Server{plant, stream}.run(); }
+Status serve(plant::Plant& plant, Stream& stream, const ServeOptions& options, ServeSummary& summary) {
+  summary = {};
+  return Server{plant, stream, options, summary}.run();
+}
+
+Result<ServeSummary> serve(plant::Plant& plant, Stream& stream, const ServeOptions& options) {
+  ServeSummary summary;
+  if (Status served = serve(plant, stream, options, summary); !served) return Failure{served.error()};
+  return summary;
+}
 
 }  // namespace duet::link

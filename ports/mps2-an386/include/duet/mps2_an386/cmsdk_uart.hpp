@@ -18,8 +18,6 @@ class CmsdkUart {
 
   // Enables the receiver and its interrupt, raised when a byte has arrived.
   void enable_receive_interrupt() const;
-  // Enables the receiver alone, for a caller that polls.
-  void enable_receiver() const;
   // Enables the transmit interrupt, raised when the transmit buffer has taken a byte and has room again.
   void enable_transmit_interrupt() const;
   // Puts `byte` in the transmit buffer unless it is full (false). Never waits.

@@ -1,0 +1,141 @@
+#include "pil_summary.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <string_view>
+
+namespace duet::cli {
+namespace {
+
+constexpr std::string_view tilt_name = "theta_deg";
+
+std::string fixed(double value, int digits) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(digits) << value;
+  return text.str();
+}
+
+std::string describe(const TiltStatistics& tilt) {
+  return "mean " + fixed(tilt.mean_deg, 2) + " deg, RMS " + fixed(tilt.rms_deg, 2) + " deg, largest |theta| " +
+         fixed(tilt.largest_abs_deg, 2) + " deg";
+}
+
+void run_lines(const PilRun& run, std::ostream& out) {
+  const double model_s = run.model_time_s;
+  out << "  run       " << fixed(model_s, 3) << " s of model time in " << fixed(run.wall_s, 3) << " s of wall time";
+  if (run.wall_s > 0) out << ": " << fixed(model_s / run.wall_s, 2) << " x real time";
+  out << (run.lock_step ? " (lock-step)\n" : " (real time)\n");
+  if (!run.lock_step && run.session) {
+    const auto worst_ms = std::chrono::duration<double, std::milli>(run.session->worst_lateness).count();
+    out << "            late ticks " << run.session->late_ticks;
+    if (run.session->late_ticks > 0) out << ", the latest " << fixed(worst_ms, 3) << " ms late";
+    out << '\n';
+  }
+}
+
+void tilt_lines(const PilRun& run, std::ostream& out) {
+  if (!run.tilt) return;
+  out << "  tilt      whole run: " << describe(*run.tilt) << '\n';
+  if (run.tilt_after_release) {
+    out << "            from the release at " << fixed(run.tilt_after_release->from_s, 3)
+        << " s: " << describe(*run.tilt_after_release) << '\n';
+  }
+  if (run.recording_truncated) out << "            (over the part of the run kept in memory)\n";
+}
+
+void task_table(const PilRun& run, std::ostream& out) {
+  std::size_t name_width = 4;
+  for (const FirmwareTask& task : run.firmware.tasks) name_width = std::max(name_width, task.name.size());
+  const int width = static_cast<int>(name_width);
+  out << "  tasks     instructions at -icount shift=" << run.icount_shift
+      << "; us: an ESTIMATE for a 209 MHz core at one instruction per cycle\n";
+  out << "            " << std::left << std::setw(width) << "task" << std::right << std::setw(12) << "activations"
+      << std::setw(10) << "overruns" << std::setw(12) << "mean instr" << std::setw(11) << "max instr" << std::setw(15)
+      << "max us (est.)" << '\n';
+  for (const FirmwareTask& task : run.firmware.tasks) {
+    if (task.name.empty()) continue;  // an index the firmware never reported
+    const double mean = instructions_from_cycles(static_cast<double>(task.mean_cycles), run.icount_shift);
+    const double max = instructions_from_cycles(static_cast<double>(task.max_cycles), run.icount_shift);
+    out << "            " << std::left << std::setw(width) << task.name << std::right << std::setw(12)
+        << task.activations << std::setw(10) << task.overruns << std::setw(12) << fixed(mean, 0) << std::setw(11)
+        << fixed(max, 0) << std::setw(15) << fixed(estimated_us_at_209_mhz(max), 2) << '\n';
+  }
+}
+
+void firmware_lines(const PilRun& run, std::ostream& out) {
+  const FirmwareReport& firmware = run.firmware;
+  if (!firmware.status && !firmware.end) {
+    out << "  firmware  said nothing on its console (no duet-status line)\n";
+    return;
+  }
+  const std::uint64_t ticks = firmware.end ? firmware.end->ticks : firmware.status->ticks;
+  const std::uint64_t overruns = firmware.end ? firmware.end->overruns : firmware.status->overruns;
+  out << "  firmware  " << ticks << " ticks, " << overruns << " overruns";
+  if (firmware.status) out << ", core load " << fixed(static_cast<double>(firmware.status->busy_ppm) / 1e4, 2) << " %";
+  if (firmware.end) out << "; ended: " << firmware.end->reason;
+  out << '\n';
+  if (!firmware.tasks.empty()) task_table(run, out);
+}
+
+void xcp_lines(const PilRun& run, std::ostream& out) {
+  if (!run.bridge) {
+    out << "  xcp       no bridge (--no-bridge)\n";
+  } else if (!run.xcp) {
+    out << "  xcp       the bridge did not report its counters\n";
+  } else {
+    const XcpTraffic& xcp = *run.xcp;
+    out << "  xcp       " << xcp.frames_to_slave << " frames to the slave (" << xcp.bytes_to_slave << " bytes), "
+        << xcp.frames_to_master << " to the master (" << xcp.bytes_to_master << " bytes), " << xcp.daq_frames_dropped
+        << " DAQ frames dropped, " << xcp.masters_served << " masters served\n";
+  }
+}
+
+}  // namespace
+
+std::optional<TiltStatistics> tilt_statistics(const model::Recording& recording, double from_s) {
+  const auto column = std::find(recording.names.begin(), recording.names.end(), tilt_name);
+  if (column == recording.names.end()) return std::nullopt;
+  const std::vector<double>& theta = recording.columns[static_cast<std::size_t>(column - recording.names.begin())];
+  TiltStatistics tilt{.from_s = from_s};
+  double sum = 0;
+  double squares = 0;
+  for (std::size_t row = 0; row < recording.time_s.size() && row < theta.size(); ++row) {
+    if (recording.time_s[row] < from_s) continue;
+    ++tilt.samples;
+    sum += theta[row];
+    squares += theta[row] * theta[row];
+    tilt.largest_abs_deg = std::max(tilt.largest_abs_deg, std::abs(theta[row]));
+  }
+  if (tilt.samples == 0) return std::nullopt;
+  const auto count = static_cast<double>(tilt.samples);
+  tilt.mean_deg = sum / count;
+  tilt.rms_deg = std::sqrt(squares / count);
+  return tilt;
+}
+
+double instructions_from_cycles(double cycles, int icount_shift) {
+  constexpr double timer_tick_ns = 40;  // 25 MHz
+  return cycles * timer_tick_ns / std::ldexp(1.0, icount_shift);
+}
+
+double estimated_us_at_209_mhz(double instructions) { return instructions / 209; }
+
+std::string format_summary(const PilRun& run) {
+  std::ostringstream out;
+  out << "summary\n";
+  run_lines(run, out);
+  tilt_lines(run, out);
+  if (run.session) {
+    out << "  link      " << run.session->ticks << " ticks, " << run.session->interrupts << " interrupts, "
+        << run.session->writes << " writes, " << run.session->reads << " reads\n";
+  } else {
+    out << "  link      the firmware never connected\n";
+  }
+  firmware_lines(run, out);
+  xcp_lines(run, out);
+  return out.str();
+}
+
+}  // namespace duet::cli

@@ -1,0 +1,126 @@
+// duet pil's summary from what a run left behind: the robot's tilt, instructions from timer cycles, the bridge's
+// counters, and the text itself.
+#include "pil_summary.hpp"
+
+#include <gtest/gtest.h>
+
+#include "bridge_counters.hpp"
+
+namespace duet::cli {
+namespace {
+
+model::Recording tilt_recording() {
+  model::Recording recording;
+  recording.names = {"x_m", "theta_deg"};
+  recording.units = {"m", "deg"};
+  recording.time_s = {0.0, 0.5, 1.0, 1.5};
+  recording.columns = {{0, 0, 0, 0}, {5, -3, 1, -1}};
+  return recording;
+}
+
+TEST(PilSummary, TiltStatisticsOverTheWholeRunAndFromTheRelease) {
+  const auto whole = tilt_statistics(tilt_recording(), 0);
+  ASSERT_TRUE(whole);
+  EXPECT_EQ(whole->samples, 4U);
+  EXPECT_DOUBLE_EQ(whole->mean_deg, 0.5);
+  EXPECT_DOUBLE_EQ(whole->rms_deg, 3.0);  // sqrt((25 + 9 + 1 + 1) / 4)
+  EXPECT_DOUBLE_EQ(whole->largest_abs_deg, 5);
+
+  const auto released = tilt_statistics(tilt_recording(), 1.0);  // from the row at 1.0 on
+  ASSERT_TRUE(released);
+  EXPECT_EQ(released->samples, 2U);
+  EXPECT_DOUBLE_EQ(released->mean_deg, 0);
+  EXPECT_DOUBLE_EQ(released->rms_deg, 1);
+  EXPECT_DOUBLE_EQ(released->largest_abs_deg, 1);
+  EXPECT_EQ(released->from_s, 1.0);
+
+  EXPECT_FALSE(tilt_statistics(tilt_recording(), 2.0));  // no row that late
+  model::Recording no_tilt = tilt_recording();
+  no_tilt.names[1] = "v_m_s";
+  EXPECT_FALSE(tilt_statistics(no_tilt, 0));
+  EXPECT_FALSE(tilt_statistics(model::Recording{}, 0));
+}
+
+TEST(PilSummary, InstructionsFromTimerCycles) {
+  // A 25 MHz timer tick is 40 ns; at shift 2 an instruction is 4 ns: 10 instructions a tick.
+  EXPECT_EQ(instructions_from_cycles(150, 2), 1500);
+  EXPECT_EQ(instructions_from_cycles(150, 0), 6000);
+  EXPECT_EQ(instructions_from_cycles(1, 3), 5);
+  EXPECT_EQ(estimated_us_at_209_mhz(20900), 100);  // the thesis' 99.8 us step, about 20,900 cycles
+}
+
+TEST(PilSummary, TheBridgesCountersFromItsLastWords) {
+  const std::string output =
+      "duet-bridge: channel unix:/tmp/x/xcp.sock: cannot open (No such file or directory); retrying\n"
+      "duet-bridge: WebSocket clients on 127.0.0.1:8765\n"
+      "duet-bridge: stopped; channel open, master none; frames to master 12 (340 bytes), to slave 6 (60 bytes); DAQ "
+      "frames dropped 2; garbage bytes 0; channel opened 1 times; masters served 3, refused 0; latency mean 80 us, "
+      "max 140 us; application channel {\"type\":\"status\"}\n";
+  const auto traffic = parse_bridge_counters(output);
+  ASSERT_TRUE(traffic);
+  EXPECT_EQ(traffic->frames_to_master, 12U);
+  EXPECT_EQ(traffic->bytes_to_master, 340U);
+  EXPECT_EQ(traffic->frames_to_slave, 6U);
+  EXPECT_EQ(traffic->bytes_to_slave, 60U);
+  EXPECT_EQ(traffic->daq_frames_dropped, 2U);
+  EXPECT_EQ(traffic->masters_served, 3U);
+
+  EXPECT_FALSE(parse_bridge_counters(""));
+  EXPECT_FALSE(parse_bridge_counters("duet-bridge: cannot listen on 127.0.0.1:5555: Address already in use\n"));
+  EXPECT_FALSE(parse_bridge_counters("duet-bridge: stopped; frames to master many\n"));
+}
+
+TEST(PilSummary, TheWholeText) {
+  PilRun run;
+  run.lock_step = false;
+  run.icount_shift = 2;
+  run.model_time_s = 3;
+  run.wall_s = 2;
+  run.session = link::ServeSummary{};
+  run.session->ticks = 3000;
+  run.session->writes = 6000;
+  run.session->reads = 3000;
+  run.session->last_tick_s = 3;
+  run.session->late_ticks = 2;
+  run.session->worst_lateness = std::chrono::microseconds{1500};
+  run.tilt = TiltStatistics{0, 3000, 0.5, 3, 5};
+  run.tilt_after_release = TiltStatistics{2, 1000, 0, 1, 1};
+  take(run.firmware, parse_console_line("duet-status time_s=3 ticks=3000 busy_ppm=123456 overruns=1"));
+  take(run.firmware, parse_console_line("duet-task index=0 name=step_rate_1 activations=3000 overruns=1 "
+                                        "min_cycles=100 mean_cycles=150 max_cycles=2090"));
+  take(run.firmware, parse_console_line("duet-task index=1 name=t activations=30 overruns=0 min_cycles=1 "
+                                        "mean_cycles=2 max_cycles=3"));
+  run.xcp = XcpTraffic{12, 340, 6, 60, 0, 1};
+  EXPECT_EQ(format_summary(run),
+            "summary\n"
+            "  run       3.000 s of model time in 2.000 s of wall time: 1.50 x real time (real time)\n"
+            "            late ticks 2, the latest 1.500 ms late\n"
+            "  tilt      whole run: mean 0.50 deg, RMS 3.00 deg, largest |theta| 5.00 deg\n"
+            "            from the release at 2.000 s: mean 0.00 deg, RMS 1.00 deg, largest |theta| 1.00 deg\n"
+            "  link      3000 ticks, 0 interrupts, 6000 writes, 3000 reads\n"
+            "  firmware  3000 ticks, 1 overruns, core load 12.35 %\n"
+            "  tasks     instructions at -icount shift=2; us: an ESTIMATE for a 209 MHz core at one instruction per "
+            "cycle\n"
+            "            task        activations  overruns  mean instr  max instr  max us (est.)\n"
+            "            step_rate_1        3000         1        1500      20900         100.00\n"
+            "            t                    30         0          20         30           0.14\n"
+            "  xcp       6 frames to the slave (60 bytes), 12 to the master (340 bytes), 0 DAQ frames dropped, 1 "
+            "masters served\n");
+}
+
+TEST(PilSummary, WhatIsMissingIsSaid) {
+  PilRun run;
+  run.lock_step = true;
+  run.bridge = false;
+  EXPECT_EQ(format_summary(run),
+            "summary\n"
+            "  run       0.000 s of model time in 0.000 s of wall time (lock-step)\n"
+            "  link      the firmware never connected\n"
+            "  firmware  said nothing on its console (no duet-status line)\n"
+            "  xcp       no bridge (--no-bridge)\n");
+  run.bridge = true;
+  EXPECT_NE(format_summary(run).find("  xcp       the bridge did not report its counters\n"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace duet::cli

@@ -1,0 +1,67 @@
+#include "recording_plant.hpp"
+
+#include <fstream>
+
+#include "duet/plot/figure.hpp"
+
+namespace duet::cli {
+
+RecordingPlant::RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record)
+    : behind_(std::move(behind)),
+      record_(record),
+      observables_(behind_->observables()),
+      now_(observables_.size()),
+      most_rows_(100'000'000 / (observables_.size() + 1)) {
+  for (const Observable& observable : observables_) {
+    recording_.names.push_back(observable.name);
+    recording_.units.push_back(observable.unit);
+  }
+  recording_.columns.resize(observables_.size());
+}
+
+void RecordingPlant::advance(double time_s, const plant::RaiseInterrupt& raise) {
+  behind_->advance(time_s, raise);
+  if (!record_) return;
+  if (recording_.time_s.size() >= most_rows_) {
+    truncated_ = true;
+    return;
+  }
+  behind_->observe(now_);
+  recording_.time_s.push_back(time_s);
+  for (std::size_t k = 0; k < now_.size(); ++k) recording_.columns[k].push_back(now_[k]);
+}
+
+Status write_text_file(const std::string& path, const std::string& text) {
+  std::ofstream file{path};
+  file << text;
+  file.close();
+  if (!file) return Failure{"cannot write " + path};
+  return done();
+}
+
+Status create_recording_files(const RecordingFiles& files) {
+  for (const std::string& path : {files.csv, files.plot}) {
+    if (path.empty()) continue;
+    if (Status created = write_text_file(path, ""); !created) return created;
+  }
+  return done();
+}
+
+Status write_recording_files(const model::Recording& recording, const RecordingFiles& files, const std::string& title) {
+  std::string problems;  // both files are tried whatever happens to the first
+  const auto attempt = [&problems](const std::string& path, const std::string& text) {
+    if (Status written = write_text_file(path, text); !written)
+      problems += (problems.empty() ? "" : "; ") + written.error();
+  };
+  if (!files.csv.empty()) attempt(files.csv, model::to_csv(recording));
+  if (!files.plot.empty()) {
+    plot::Figure figure{title, "s", recording.time_s, {}};
+    for (std::size_t k = 0; k < recording.names.size(); ++k)
+      figure.series.push_back({recording.names[k], recording.units[k], recording.columns[k]});
+    attempt(files.plot, plot::to_svg(figure));
+  }
+  if (!problems.empty()) return Failure{problems};
+  return done();
+}
+
+}  // namespace duet::cli

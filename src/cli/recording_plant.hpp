@@ -1,0 +1,60 @@
+#pragma once
+// The plant's own view of a session: a plant that records what the plant behind it shows of itself
+// (Plant::observables) once per TICK, after it advanced, whatever the firmware measures; and the files that
+// recording is written to (--csv, --plot of `duet plant serve` and `duet pil`).
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "duet/model/simulation.hpp"
+#include "duet/plant/plant.hpp"
+#include "duet/support/result.hpp"
+
+namespace duet::cli {
+
+class RecordingPlant : public plant::Plant {
+ public:
+  // Without `record` it only passes the calls on.
+  RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record);
+
+  void advance(double time_s, const plant::RaiseInterrupt& raise) override;
+  void write(std::string_view resource, std::span<const double> values) override { behind_->write(resource, values); }
+  void read(std::string_view resource, std::span<double> values) override { behind_->read(resource, values); }
+  [[nodiscard]] std::vector<Observable> observables() const override { return observables_; }
+  void observe(std::span<double> values) const override { behind_->observe(values); }
+
+  // A row per TICK: `time_s` and a column per observable. Read it once the session is over (not thread-safe).
+  [[nodiscard]] const model::Recording& recording() const { return recording_; }
+  // Whether the session went on past what is kept in memory (the recording then holds its beginning).
+  [[nodiscard]] bool truncated() const { return truncated_; }
+
+ private:
+  std::unique_ptr<plant::Plant> behind_;
+  bool record_;
+  std::vector<Observable> observables_;
+  std::vector<double> now_;
+  model::Recording recording_;
+  // A session in real time may run for hours: keep at most 100 million values (800 MB), as duet sim does.
+  std::size_t most_rows_;
+  bool truncated_ = false;
+};
+
+// Where a recording goes; an empty path is not written.
+struct RecordingFiles {
+  std::string csv;   // like duet sim's: time_s and a column per quantity, numbers that read back as the same doubles
+  std::string plot;  // an SVG plot with a panel per unit
+};
+
+// Creates the files, empty, so that a path that cannot be written fails before a session rather than after it.
+[[nodiscard]] Status create_recording_files(const RecordingFiles& files);
+// Writes `recording` to the files; `title` heads the plot.
+[[nodiscard]] Status write_recording_files(const model::Recording& recording, const RecordingFiles& files,
+                                           const std::string& title);
+// Writes `text` to `path`; the failure names the path.
+[[nodiscard]] Status write_text_file(const std::string& path, const std::string& text);
+
+}  // namespace duet::cli
