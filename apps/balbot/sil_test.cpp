@@ -1,26 +1,14 @@
 // Software in the loop: balbot_sil, the generated firmware on the PC, records what duet sim records for the model,
 // bit for bit; over the link to `duet plant serve balbot` it balances the robot and ends where the run in one process
 // ends. Both programs run as child processes, as a user runs them.
-#include <fcntl.h>
 #include <gtest/gtest.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <bit>
-#include <chrono>
 #include <cmath>
-#include <csignal>
-#include <cstdint>
-#include <cstdlib>
-#include <filesystem>
-#include <memory>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "duet/link/stream.hpp"
+#include "child_program.hpp"
 #include "duet/link/tcp.hpp"
 #include "duet/model/model_file.hpp"
 #include "duet/model/program.hpp"
@@ -31,87 +19,8 @@
 #include "duet/support/text_file.hpp"
 #include "sil_run.hpp"
 
-extern char** environ;  // NOLINT(readability-redundant-declaration): for posix_spawn
-
 namespace duet::sil {
 namespace {
-
-using namespace std::chrono_literals;
-
-// A file in the temporary folder, removed at the end of the test.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / ("balbot_sil_test_" + std::to_string(::getpid()) + "_" + name)) {
-  }
-  ~TemporaryFile() { std::filesystem::remove(path_); }
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-  [[nodiscard]] std::string path() const { return path_.string(); }
-
- private:
-  std::filesystem::path path_;
-};
-
-// A program running as a child process: its standard output on a pipe (read line by line while it runs), its
-// standard error in a file (read once it is done, so that a long report cannot block it).
-class Program {
- public:
-  Program(const std::string& program, const std::vector<std::string>& arguments, const std::string& name)
-      : errors_{name + ".err"} {
-    int out[2] = {-1, -1};
-    if (::pipe2(out, O_CLOEXEC) != 0) return;
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);
-    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errors_.path().c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    std::vector<std::string> words{program};
-    words.insert(words.end(), arguments.begin(), arguments.end());
-    std::vector<char*> argv;
-    argv.reserve(words.size() + 1);
-    for (std::string& word : words) argv.push_back(word.data());
-    argv.push_back(nullptr);
-    if (posix_spawn(&pid_, program.c_str(), &actions, nullptr, argv.data(), environ) != 0) pid_ = -1;
-    posix_spawn_file_actions_destroy(&actions);
-    ::close(out[1]);
-    output_ = std::make_unique<link::FdStream>(out[0], out[0], 60s);
-  }
-  // A program still running when a test gives up (a server waiting for a firmware that failed) is stopped.
-  ~Program() {
-    if (pid_ > 0) {
-      ::kill(pid_, SIGTERM);
-      (void)wait();
-    }
-  }
-  Program(const Program&) = delete;
-  Program& operator=(const Program&) = delete;
-
-  [[nodiscard]] bool started() const { return pid_ > 0; }
-  // The next line of its standard output, without the newline ("" at its end).
-  std::string line() {
-    std::string text;
-    std::uint8_t byte = 0;
-    while (output_->read_exactly({&byte, 1}).ok() && byte != '\n') text += static_cast<char>(byte);
-    return text;
-  }
-  // Waits for it to end: its exit code (128 + the signal when a signal ended it).
-  int wait() {
-    int status = 0;
-    ::waitpid(std::exchange(pid_, -1), &status, 0);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  }
-  // Its standard error: call after wait().
-  [[nodiscard]] std::string errors() const {
-    auto text = read_text_file(errors_.path());
-    return text ? text.value() : "";
-  }
-
- private:
-  TemporaryFile errors_;
-  pid_t pid_ = -1;
-  std::unique_ptr<link::FdStream> output_;
-};
 
 Program balbot_sil(const std::vector<std::string>& arguments, const std::string& name) {
   return Program{BALBOT_SIL_PROGRAM, arguments, name};
@@ -122,15 +31,6 @@ plant::BalbotScenario release_scenario() {
   EXPECT_TRUE(scenario.ok()) << scenario.error();
   return scenario ? scenario.value() : plant::BalbotScenario{};
 }
-
-// The number after `label` in balbot_sil's last line ("...; final theta 0.0123 deg; ..."), exactly as written.
-double number_after(const std::string& line, const std::string& label) {
-  const std::size_t at = line.find(label);
-  EXPECT_NE(at, std::string::npos) << label << " in: " << line;
-  return at == std::string::npos ? NAN : std::strtod(line.c_str() + at + label.size(), nullptr);
-}
-
-bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 TEST(BalbotSil, TheFirmwareOnThePcRecordsWhatDuetSimRecords) {
   const TemporaryFile csv{"firmware.csv"};

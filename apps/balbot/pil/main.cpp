@@ -10,6 +10,7 @@
 // with 0 if no task overran and the link held, 1 otherwise; without one it runs until QEMU is stopped.
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <string_view>
 
@@ -137,6 +138,11 @@ int main() {
   if (!board::run_model(executive, model)) fail("the model does not fit the board", 2);
   link.bye();
   report.ended(executive, link);
+  // Where the model ended, as float bits: to compare with the same generated code on the PC.
+  duet::TextBuffer<80> signals;
+  signals.append("balbot-signals theta_bits=").append_hex(std::bit_cast<std::uint32_t>(balbot::signals.theta));
+  signals.append(" y_bits=").append_hex(std::bit_cast<std::uint32_t>(balbot::signals.y)).append('\n');
+  cortex_m::console_write(signals.view());
   const bool overran = report.total_overruns(executive) != 0;
   return link.ok() && !overran ? 0 : 1;
 }

@@ -1,0 +1,120 @@
+// Processor in the loop, lock-step: the robot's firmware on QEMU's emulated Cortex-M4 (`duet pil`) balances the
+// simulated robot for 10 s without an overrun, and the robot lives exactly the life it lives under the same generated
+// code built for the PC (balbot_sil over the link to `duet plant serve`): every quantity of the robot, every
+// millisecond, bit for bit, and the firmware's final tilt estimate and duty too. All programs run as a user runs them.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "child_program.hpp"
+#include "duet/plot/csv.hpp"
+#include "duet/support/text_file.hpp"
+
+namespace duet::sil {
+namespace {
+
+// Every line a program writes until it ends.
+std::vector<std::string> all_lines(Program& program) {
+  std::vector<std::string> lines;
+  for (std::string line = program.line(); !line.empty(); line = program.line()) lines.push_back(line);
+  return lines;
+}
+
+// The value of `key=` in a console line, as written.
+std::string field(const std::string& line, const std::string& key) {
+  const std::size_t at = line.find(" " + key + "=");
+  if (at == std::string::npos) return {};
+  const std::size_t start = at + key.size() + 2;
+  return line.substr(start, line.find(' ', start) - start);
+}
+
+float float_from_bits(const std::string& hex) {
+  return std::bit_cast<float>(static_cast<std::uint32_t>(std::stoul(hex, nullptr, 16)));
+}
+
+TEST(BalbotPil, TenSecondsOnTheEmulatedCortexM4BalanceWithoutOverrunsAndMatchTheCodeOnThePc) {
+  if (!std::filesystem::exists(BALBOT_PIL_FIRMWARE)) GTEST_SKIP() << "no firmware image " << BALBOT_PIL_FIRMWARE;
+  const TemporaryFile pil_robot{"pil_robot.csv"};
+  const TemporaryFile console{"pil_console.txt"};
+  Program pil{DUET_PROGRAM,
+              {"pil", BALBOT_PIL_FIRMWARE, "--scenario", DUET_BALBOT_SCENARIO, "--duration", "10", "--lock-step",
+               "--no-bridge", "--csv", pil_robot.path(), "--console", console.path()},
+              "pil"};
+  ASSERT_TRUE(pil.started());
+  const std::vector<std::string> summary = all_lines(pil);
+  ASSERT_EQ(pil.wait(), 0) << pil.errors();
+
+  // The firmware's own account: all 10001 ticks, no task ever late, the link held; and where the model ended.
+  auto console_text = read_text_file(console.path());
+  ASSERT_TRUE(console_text.ok()) << console_text.error();
+  std::vector<std::string> ended;
+  std::string signals;
+  std::size_t task_lines = 0;
+  std::size_t overrunning_tasks = 0;
+  for (std::size_t start = 0; start < console_text.value().size();) {
+    const std::size_t end = console_text.value().find('\n', start);
+    const std::string line = console_text.value().substr(start, end - start);
+    start = end == std::string::npos ? console_text.value().size() : end + 1;
+    if (line.starts_with("duet-end ")) ended.push_back(line);
+    if (line.starts_with("balbot-signals ")) signals = line;
+    if (line.starts_with("duet-task ")) {
+      ++task_lines;
+      if (field(line, "overruns") != "0") ++overrunning_tasks;
+    }
+  }
+  ASSERT_EQ(ended.size(), 1U) << console_text.value();
+  EXPECT_EQ(ended[0], "duet-end reason=final_tick ticks=10001 overruns=0 link=ok");
+  EXPECT_GE(task_lines, 11U * 10U);  // every task, every second
+  EXPECT_EQ(overrunning_tasks, 0U);
+
+  // The same generated code on the PC against the same robot, over the link.
+  const TemporaryFile sil_robot{"sil_robot.csv"};
+  Program server{DUET_PROGRAM,
+                 {"plant", "serve", "balbot", "--scenario", DUET_BALBOT_SCENARIO, "--listen", "127.0.0.1:0", "--once",
+                  "--csv", sil_robot.path()},
+                 "server"};
+  ASSERT_TRUE(server.started());
+  const std::string listening = server.line();
+  const std::string prefix = "plant balbot listening on ";
+  ASSERT_TRUE(listening.starts_with(prefix)) << listening;
+  Program sil{BALBOT_SIL_PROGRAM, {"--link", listening.substr(prefix.size()), "--duration", "10"}, "sil"};
+  const std::string sil_summary = sil.line();
+  ASSERT_EQ(sil.wait(), 0) << sil.errors();
+  ASSERT_EQ(server.wait(), 0) << server.errors();
+
+  // Back to back: the robot's every quantity at every tick, to the last bit (the CSVs write numbers that read back
+  // as the same doubles), and the firmware's final tilt estimate.
+  auto pil_text = read_text_file(pil_robot.path());
+  auto sil_text = read_text_file(sil_robot.path());
+  ASSERT_TRUE(pil_text.ok() && sil_text.ok());
+  if (pil_text.value() != sil_text.value()) {
+    const auto [differs, _] = std::mismatch(sil_text.value().begin(), sil_text.value().end(),
+                                            pil_text.value().begin(), pil_text.value().end());
+    FAIL() << "the robot's recordings differ from line " << std::count(sil_text.value().begin(), differs, '\n') + 1;
+  }
+  ASSERT_FALSE(signals.empty()) << console_text.value();
+  const double pil_theta = float_from_bits(field(signals, "theta_bits"));
+  EXPECT_TRUE(same_bits(pil_theta, number_after(sil_summary, "final theta "))) << signals << " / " << sil_summary;
+
+  // Balanced: held at 5 degrees, let go at 2 s, within a degree from 4 s on (the robot's own tilt).
+  auto robot = plot::read_csv(pil_text.value(), pil_robot.path());
+  ASSERT_TRUE(robot.ok()) << robot.error();
+  ASSERT_EQ(robot.value().time.size(), 10001U);
+  const auto theta = std::find_if(robot.value().series.begin(), robot.value().series.end(),
+                                  [](const plot::Series& series) { return series.name == "theta_deg"; });
+  ASSERT_NE(theta, robot.value().series.end());
+  EXPECT_EQ(theta->values.front(), 5.0);
+  double largest = 0;
+  for (std::size_t k = 4000; k < theta->values.size(); ++k) largest = std::max(largest, std::abs(theta->values[k]));
+  EXPECT_GT(largest, 0.0);
+  EXPECT_LT(largest, 1.0);
+}
+
+}  // namespace
+}  // namespace duet::sil
