@@ -111,6 +111,14 @@ inline double number_after(const std::string& line, const std::string& label) {
   return at == std::string::npos ? NAN : std::strtod(line.c_str() + at + label.size(), nullptr);
 }
 
+// Where `duet plant serve` says it listens ("plant balbot listening on 127.0.0.1:40312"): its first line.
+inline std::string listening_address(Program& server) {
+  const std::string line = server.line();
+  const std::string prefix = "plant balbot listening on ";
+  EXPECT_TRUE(line.starts_with(prefix)) << line;
+  return line.starts_with(prefix) ? line.substr(prefix.size()) : std::string{};
+}
+
 inline bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
 
 }  // namespace duet::sil

@@ -80,10 +80,9 @@ TEST(BalbotPil, TenSecondsOnTheEmulatedCortexM4BalanceWithoutOverrunsAndMatchThe
                   "--csv", sil_robot.path()},
                  "server"};
   ASSERT_TRUE(server.started());
-  const std::string listening = server.line();
-  const std::string prefix = "plant balbot listening on ";
-  ASSERT_TRUE(listening.starts_with(prefix)) << listening;
-  Program sil{BALBOT_SIL_PROGRAM, {"--link", listening.substr(prefix.size()), "--duration", "10"}, "sil"};
+  const std::string address = listening_address(server);
+  ASSERT_FALSE(address.empty());
+  Program sil{BALBOT_SIL_PROGRAM, {"--link", address, "--duration", "10"}, "sil"};
   const std::string sil_summary = sil.line();
   ASSERT_EQ(sil.wait(), 0) << sil.errors();
   ASSERT_EQ(server.wait(), 0) << server.errors();

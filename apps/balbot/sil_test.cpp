@@ -75,10 +75,8 @@ TEST(BalbotSil, OverTheLinkItBalancesAndEndsWhereTheRunInOneProcessEnds) {
                   "--csv", robot_csv.path()},
                  "server"};
   ASSERT_TRUE(server.started());
-  const std::string listening = server.line();
-  const std::string prefix = "plant balbot listening on ";
-  ASSERT_TRUE(listening.starts_with(prefix)) << listening;
-  const std::string address = listening.substr(prefix.size());
+  const std::string address = listening_address(server);
+  ASSERT_FALSE(address.empty());
 
   Program firmware = balbot_sil({"--link", address, "--duration", "5"}, "firmware");
   ASSERT_TRUE(firmware.started());
