@@ -2,47 +2,27 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
-#include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <iomanip>
 #include <memory>
-#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "duet/support/text_file.hpp"
 #include "duet/xcp/host/a2l.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
 #include "duet/xcp/protocol.hpp"
+#include "xcp_record.hpp"
+#include "xcp_session.hpp"
 
 namespace duet::cli {
 namespace {
 
 using nlohmann::json;
 using namespace duet::xcp::host;
-
-struct XcpOptions {
-  std::string connect;
-  std::string a2l_file;
-  bool json = false;
-  int timeout_ms = 1000;
-  std::vector<std::string> targets;  // names, NAME=VALUE, or ADDRESS:SIZE
-  std::vector<std::string> signals;
-  std::string event;
-  double duration_s = 1.0;
-  std::string output;
-  std::string address;
-  std::uint32_t size = 0;
-  int segment = 0;
-  int page = -1;
-  bool ecu = false;
-  bool xcp = false;
-};
+using namespace xcp_actions;
 
 std::string hex_bytes(const std::vector<std::uint8_t>& bytes) {
   std::ostringstream out;
@@ -51,60 +31,6 @@ std::string hex_bytes(const std::vector<std::uint8_t>& bytes) {
         << static_cast<unsigned>(bytes[index]);
   }
   return out.str();
-}
-
-Result<A2lDescription> load_a2l(const std::string& file) {
-  auto text = read_text_file(file);
-  if (!text) return Failure{text.error()};
-  return read_a2l(text.value(), file);
-}
-
-// Everything an action needs: the A2L (if given) and a connected master.
-struct Session {
-  std::optional<A2lDescription> a2l;
-  std::unique_ptr<Master> master;
-};
-
-Result<Session> open_session(const XcpOptions& options, bool needs_master) {
-  Session session;
-  if (!options.a2l_file.empty()) {
-    auto a2l = load_a2l(options.a2l_file);
-    if (!a2l) return Failure{a2l.error()};
-    session.a2l = std::move(a2l).value();
-  }
-  if (!needs_master) return session;
-  Endpoint endpoint;
-  if (!options.connect.empty()) {
-    auto parsed = parse_endpoint(options.connect);
-    if (!parsed) return Failure{parsed.error()};
-    endpoint = parsed.value();
-  } else if (session.a2l) {
-    endpoint = session.a2l->transport;
-  } else {
-    return Failure{"no slave to talk to: give --connect tcp://host:port or --a2l FILE"};
-  }
-  const std::chrono::milliseconds timeout{options.timeout_ms};
-  auto channel = MasterChannel::open(endpoint, timeout);
-  if (!channel) return Failure{channel.error()};
-  session.master = std::make_unique<Master>(std::move(channel).value(), timeout);
-  if (auto connected = session.master->connect(); !connected) return Failure{connected.error()};
-  return session;
-}
-
-const Variable* find_variable(const A2lDescription& a2l, const std::string& name) {
-  for (const auto* list : {&a2l.measurements, &a2l.characteristics}) {
-    for (const Variable& variable : *list) {
-      if (variable.name == name) return &variable;
-    }
-  }
-  return nullptr;
-}
-
-Result<const Variable*> variable_named(const Session& session, const std::string& name) {
-  if (!session.a2l) return Failure{"'" + name + "': names need --a2l FILE"};
-  const Variable* variable = find_variable(*session.a2l, name);
-  if (variable == nullptr) return Failure{"'" + name + "' is neither a MEASUREMENT nor a CHARACTERISTIC in the A2L"};
-  return variable;
 }
 
 Result<std::uint32_t> parse_number(const std::string& text) {
@@ -116,11 +42,6 @@ Result<std::uint32_t> parse_number(const std::string& text) {
   } catch (const std::exception&) {
     return Failure{"'" + text + "' is not an address or size (decimal or 0x hex)"};
   }
-}
-
-ExitCode report(const Failure& failure, Streams streams) {
-  streams.err << "duet xcp: " << failure.message << '\n';
-  return ExitCode::failure;
 }
 
 ExitCode run_info(const XcpOptions& options, Streams streams) {
@@ -223,113 +144,11 @@ ExitCode run_write(const XcpOptions& options, Streams streams) {
   if (!session) return report({session.error()}, streams);
   Master& master = *session.value().master;
   for (const std::string& assignment : options.targets) {
-    const std::size_t equals = assignment.find('=');
-    if (equals == std::string::npos) return report({"'" + assignment + "': expected NAME=VALUE"}, streams);
-    auto variable = variable_named(session.value(), assignment.substr(0, equals));
-    if (!variable) return report({variable.error()}, streams);
-    double value = 0;
-    try {
-      std::size_t used = 0;
-      value = std::stod(assignment.substr(equals + 1), &used);
-      if (used != assignment.size() - equals - 1) throw std::invalid_argument{assignment};
-    } catch (const std::exception&) {
-      return report({"'" + assignment + "': the value is not a number"}, streams);
-    }
-    auto bytes = encode(*variable.value(), value);
-    if (!bytes) return report({bytes.error()}, streams);
-    std::vector<std::uint8_t> all;
-    for (std::uint32_t element = 0; element < variable.value()->count; ++element)
-      all.insert(all.end(), bytes.value().begin(), bytes.value().end());
-    if (Status written = master.download(variable.value()->extension, variable.value()->address, all); !written) {
-      return report({written.error()}, streams);
-    }
+    auto write = parse_assignment(session.value(), assignment);
+    if (!write) return report({write.error()}, streams);
+    if (Status written = apply(master, write.value()); !written) return report({written.error()}, streams);
   }
   (void)master.disconnect();
-  return ExitCode::success;
-}
-
-ExitCode run_record(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, true);
-  if (!session) return report({session.error()}, streams);
-  if (!session.value().a2l) return report({"record needs --a2l FILE"}, streams);
-  const A2lDescription& a2l = *session.value().a2l;
-  Master& master = *session.value().master;
-  std::uint16_t event = 0;
-  bool event_found = false;
-  for (const EventInfo& info : a2l.events) {
-    if (info.name == options.event || std::to_string(info.channel) == options.event) {
-      event = info.channel;
-      event_found = true;
-    }
-  }
-  if (!event_found)
-    return report({"'" + options.event + "' is no event in the A2L (give its name or number)"}, streams);
-  std::vector<const Variable*> recorded;
-  DaqListSetup list{.event = event, .prescaler = 1};
-  for (const std::string& name : options.signals) {
-    auto variable = variable_named(session.value(), name);
-    if (!variable) return report({variable.error()}, streams);
-    recorded.push_back(variable.value());
-    for (std::uint32_t element = 0; element < variable.value()->count; ++element) {
-      list.entries.push_back(
-          {variable.value()->extension,
-           variable.value()->address + element * static_cast<std::uint32_t>(size_of(variable.value()->type)),
-           static_cast<std::uint8_t>(size_of(variable.value()->type))});
-    }
-  }
-  if (Status started = master.start_daq({list}); !started) return report({started.error()}, streams);
-
-  std::ofstream file;
-  if (!options.output.empty()) {
-    file.open(options.output);
-    if (!file) return report({options.output + ": cannot be written"}, streams);
-  }
-  std::ostream& csv = options.output.empty() ? streams.out : file;
-  csv << "time_s";
-  for (const Variable* variable : recorded) {
-    for (std::uint32_t element = 0; element < variable->count; ++element) {
-      csv << ',' << variable->name << (variable->count > 1 ? "[" + std::to_string(element) + "]" : "");
-    }
-  }
-  csv << '\n';
-  static constexpr double unit_seconds[] = {1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0};
-  const double tick_seconds = unit_seconds[a2l.timestamp_unit < 10 ? a2l.timestamp_unit : 3] * a2l.timestamp_ticks;
-  const bool terminal = ::isatty(STDERR_FILENO) != 0 && &streams.err == &std::cerr;
-  const auto start = std::chrono::steady_clock::now();
-  const auto end = start + std::chrono::duration<double>(options.duration_s);
-  std::optional<std::uint32_t> first_timestamp;
-  std::uint64_t samples = 0;
-  int last_second = -1;
-  while (std::chrono::steady_clock::now() < end) {
-    auto received = master.receive_samples(std::chrono::milliseconds{50});
-    if (!received) return report({received.error()}, streams);
-    for (const DaqSample& sample : received.value()) {
-      if (!first_timestamp) first_timestamp = sample.timestamp;
-      csv << std::setprecision(9) << static_cast<double>(sample.timestamp - *first_timestamp) * tick_seconds;
-      std::size_t at = 0;
-      for (const Variable* variable : recorded) {
-        const std::size_t bytes = size_of(variable->type) * variable->count;
-        for (double value : decode(*variable, std::span{sample.bytes}.subspan(at, bytes)))
-          csv << ',' << std::setprecision(10) << value;
-        at += bytes;
-      }
-      csv << '\n';
-      ++samples;
-    }
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (terminal) {
-      streams.err << "\rrecording " << std::fixed << std::setprecision(1) << elapsed << " / " << options.duration_s
-                  << " s, " << samples << " samples" << std::flush;
-    } else if (static_cast<int>(elapsed) != last_second) {
-      last_second = static_cast<int>(elapsed);
-    }
-  }
-  (void)master.stop_daq();
-  (void)master.disconnect();
-  if (terminal) streams.err << '\n';
-  streams.err << "recorded " << samples << " samples of " << recorded.size() << " signals on event '" << options.event
-              << "' (" << master.overload_events() << " overloads, " << master.channel().counter_gaps()
-              << " lost packets)\n";
   return ExitCode::success;
 }
 
@@ -409,6 +228,11 @@ Action define_xcp_command(CLI::App& command) {
   record->add_option("--event", options->event, "The event (name or number) that samples them")->required();
   record->add_option("--duration", options->duration_s, "Seconds to record")->check(CLI::PositiveNumber);
   record->add_option("--output", options->output, "The CSV file (default: standard output)");
+  record->add_option("--plot", options->plot, "Also an SVG plot of the recording, a panel per unit");
+  record->add_flag("--event-time", options->event_time,
+                   "Time each sample by its number and the event's period in the A2L, not by the DAQ timestamp");
+  record->add_option("--write-at", options->timed_writes,
+                     "SECONDS:NAME=VALUE: write a parameter that long after the recording started (repeat for more)");
   CLI::App* checksum = command.add_subcommand("checksum", "BUILD_CHECKSUM over a block of the slave's memory");
   add_connection(checksum);
   checksum->add_option("address", options->address, "Start address (decimal or 0x hex)")->required();

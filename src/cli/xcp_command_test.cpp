@@ -9,6 +9,8 @@
 #include <sstream>
 #include <thread>
 
+#include "duet/plot/csv.hpp"
+#include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
 #include "test_target.hpp"
 
@@ -112,6 +114,57 @@ TEST_F(XcpCommand, RecordsSignalsToCsv) {
             std::string::npos)
       << recorded.err;
   EXPECT_FALSE(target.slave.connected());  // the command disconnected when done
+}
+
+// One session records and tunes: the bridge, like XCP, serves one master, so a second `duet xcp write` would be
+// refused while the recording runs.
+TEST_F(XcpCommand, RecordsWhileWritingATimedParameterAndPlots) {
+  std::atomic<bool> stepping{true};
+  std::thread model{[&] {
+    for (std::uint32_t number = 1; stepping; ++number) {
+      target.step(number);
+      std::this_thread::sleep_for(std::chrono::microseconds{500});
+    }
+  }};
+  const std::string csv_file = a2l_file + ".csv";
+  const std::string svg_file = a2l_file + ".svg";
+  const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--signal", "gain",
+                                "--event", "1 ms", "--duration", "0.4", "--write-at", "0.2:gain=2.5", "--event-time",
+                                "--output", csv_file, "--plot", svg_file});
+  stepping = false;
+  model.join();
+  ASSERT_EQ(recorded.exit_code, ExitCode::success) << recorded.err;
+  EXPECT_NE(recorded.err.find("wrote gain=2.5 after 0.2"), std::string::npos) << recorded.err;
+  EXPECT_EQ(target.parameters[3], 0x40);  // 2.5f is 0x40200000, little-endian
+
+  auto figure = plot::read_csv(read_text_file(csv_file).value(), csv_file);
+  ASSERT_TRUE(figure.ok()) << figure.error();
+  const plot::Figure& samples = figure.value();
+  ASSERT_EQ(samples.series.size(), 2U);
+  ASSERT_GT(samples.time.size(), 50U);
+  for (std::size_t k = 0; k < samples.time.size(); ++k) {
+    EXPECT_DOUBLE_EQ(samples.time[k], static_cast<double>(k) * 0.001);  // the event's period, not the timestamps
+  }
+  EXPECT_EQ(samples.series[1].values.front(), 0.0);
+  EXPECT_EQ(samples.series[1].values.back(), 2.5);
+  const std::string svg = read_text_file(svg_file).value();
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find(">gain<"), std::string::npos);
+  std::filesystem::remove(csv_file);
+  std::filesystem::remove(svg_file);
+
+  EXPECT_EQ(run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms", "--duration", "0.1",
+                 "--write-at", "0.2:gain=1"})
+                .err,
+            "duet xcp: '0.2:gain=1': after the recording's end (--duration)\n");
+  EXPECT_EQ(
+      run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms", "--write-at", "soon:gain=1"})
+          .err,
+      "duet xcp: 'soon:gain=1': expected SECONDS:NAME=VALUE\n");
+  EXPECT_EQ(
+      run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms", "--write-at", "0:gain=1000"})
+          .err,
+      "duet xcp: gain: 1000 is outside 0 .. 100\n");
 }
 
 TEST_F(XcpCommand, ChecksumAndPages) {
