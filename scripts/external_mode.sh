@@ -48,9 +48,9 @@ fi
 # The LQR is the default; the thesis' PID drives the motors only when use_lqr is 0.
 "$duet" xcp write use_lqr=0 --a2l "$a2l" --connect "tcp://$xcp"
 # One session records and tunes: the bridge, like XCP, serves one master at a time. The writes happen at 3 and 6 s
-# of the PC's clock; the recording's time is the firmware's (sample number x 1 ms).
+# of the PC's clock; the recording's time is the firmware's (DAQ timestamps).
 "$duet" xcp record --a2l "$a2l" --connect "tcp://$xcp" --signal theta --signal y --signal P --signal D \
-  --event "rate 1" --event-time --duration 10 --write-at 3:P=0.0392 --write-at 6:D=0.5 \
+  --event "rate 1" --duration 10 --write-at 3:P=0.0392 --write-at 6:D=0.5 \
   --output "$out/external_mode.csv" --plot "$out/external_mode.svg"
 
 kill -INT $run
