@@ -7,14 +7,15 @@
 #include <bit>
 #include <cstring>
 
+#include "balbot.hpp"
+#include "balbot_xcp.hpp"
 #include "duet/app_channel/endpoint.hpp"
 #include "duet/cortex_m/interrupts.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
+#include "duet/mps2_an386/uart_line.hpp"
 #include "duet/xcp/stream_transport.hpp"
-#include "balbot.hpp"
-#include "balbot_xcp.hpp"
 #include "robot_firmware.hpp"
 
 namespace balbot::pil {
@@ -25,70 +26,28 @@ namespace cortex_m = duet::cortex_m;
 namespace xcp = duet::xcp;
 namespace app_channel = duet::app_channel;
 
-constexpr unsigned lowest_priority = cortex_m::priority_levels - 1U;
-constexpr std::uint32_t baud_rate = 115'200;  // QEMU ignores it; the board's RPMsg has none
 constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
-
-// A UART that a protocol's transmit() feeds and whose received bytes go to its receive(). Only its interrupts call
-// serve(), all at one priority, so it never runs twice at once.
-template <typename Protocol>
-class UartLine {
- public:
-  UartLine(board::CmsdkUart uart, unsigned receive_line, unsigned transmit_line)
-      : uart_(uart), receive_line_(receive_line), transmit_line_(transmit_line) {}
-
-  void start() const {
-    uart_.enable_transmitter(board::peripheral_clock_hz, baud_rate);
-    uart_.enable_receive_interrupt();
-    uart_.enable_transmit_interrupt();
-    for (const unsigned line : {receive_line_, transmit_line_}) {
-      cortex_m::set_interrupt_priority(line, lowest_priority);
-      cortex_m::enable_interrupt(line);
-    }
-  }
-  // From a task: there is something to send.
-  void kick() const { cortex_m::set_interrupt_pending(transmit_line_); }
-
-  void serve(Protocol& protocol) {
-    char byte = 0;
-    while (uart_.read(byte)) {
-      const auto received = static_cast<std::uint8_t>(byte);
-      protocol.receive({&received, 1});
-      ++bytes_received_;
-    }
-    uart_.clear_transmit_interrupt();
-    for (;;) {
-      if (sent_ == framed_) {
-        framed_ = protocol.transmit(frames_);
-        sent_ = 0;
-        if (framed_ == 0) return;
-      }
-      if (!uart_.try_write(frames_[sent_])) return;  // the transmit interrupt comes back when there is room
-      ++sent_;
-      ++bytes_sent_;
-    }
-  }
-
-  [[nodiscard]] std::uint32_t bytes_received() const { return bytes_received_; }
-  [[nodiscard]] std::uint32_t bytes_sent() const { return bytes_sent_; }
-
- private:
-  board::CmsdkUart uart_;
-  unsigned receive_line_;
-  unsigned transmit_line_;
-  std::array<std::uint8_t, 512> frames_{};
-  std::size_t framed_ = 0;
-  std::size_t sent_ = 0;
-  std::uint32_t bytes_received_ = 0;
-  std::uint32_t bytes_sent_ = 0;
-};
 
 // XCP: the model's calibration segment and signals (balbot_xcp.hpp, at the A2L's addresses), an event per task.
 void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
   const cortex_m::InterruptMask masked;
   std::memcpy(destination, bytes.data(), bytes.size());
 }
-std::uint32_t timestamp() { return board::ExecutivePort{}.cycles(); }
+// DAQ timestamps in the unit the generated A2L declares (TIMESTAMP_SUPPORTED ... UNIT_1US): microseconds from the
+// 25 MHz cycle counter, counted on across its wrap; tasks of every priority stamp, hence the mask.
+std::uint32_t timestamp() {
+  static std::uint32_t last_cycles = 0;
+  static std::uint32_t cycles_left = 0;  // below one microsecond
+  static std::uint32_t microseconds = 0;
+  constexpr std::uint32_t cycles_per_microsecond = board::peripheral_clock_hz / 1'000'000U;
+  const cortex_m::InterruptMask masked;
+  const std::uint32_t now = board::ExecutivePort{}.cycles();
+  cycles_left += now - last_cycles;
+  last_cycles = now;
+  microseconds += cycles_left / cycles_per_microsecond;
+  cycles_left %= cycles_per_microsecond;
+  return microseconds;
+}
 
 constexpr std::size_t max_cto = 248;
 constexpr std::size_t max_dto = 248;
@@ -111,15 +70,15 @@ const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions
                                                 .daq = {daq_lists, odts, odt_entries},
                                                 .queue = &xcp_queue,
                                                 .timestamp = timestamp,
-                                                .timestamp_unit = 1,  // 10 ns: the timer's 40 ns are 4 of them
-                                                .timestamp_ticks = 4};
+                                                .timestamp_unit = 3,  // 1 us
+                                                .timestamp_ticks = 1};
 xcp::Slave slave{xcp_configuration};
 std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
 std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
-xcp::StreamTransport xcp_transport{slave,      xcp_queue,          xcp::ethernet_framing, xcp_decoder_buffer,
-                                   max_cto,    xcp_packet_buffer};
-UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base}, board::uart0_receive_interrupt,
-                                        board::uart0_transmit_interrupt};
+xcp::StreamTransport xcp_transport{slave,   xcp_queue,        xcp::ethernet_framing, xcp_decoder_buffer,
+                                   max_cto, xcp_packet_buffer};
+board::UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base}, board::uart0_receive_interrupt,
+                                               board::uart0_transmit_interrupt};
 
 // The application channel: what the thesis' Linux application shows (theta, battery voltage, distance) and sets
 // (the PID's P, I, D), as the model sends and takes them.
@@ -151,8 +110,8 @@ std::array<std::uint8_t, app_channel::decoder_buffer_size> application_decoder_b
 std::array<std::uint8_t, app_channel::max_packet> application_packet_buffer{};
 app_channel::Endpoint endpoint{application, application_queue, interrupt_lock, application_decoder_buffer,
                                application_packet_buffer};
-UartLine<app_channel::Endpoint> application_line{board::CmsdkUart{board::uart1_base}, board::uart1_receive_interrupt,
-                                                 board::uart1_transmit_interrupt};
+board::UartLine<app_channel::Endpoint> application_line{
+    board::CmsdkUart{board::uart1_base}, board::uart1_receive_interrupt, board::uart1_transmit_interrupt};
 
 constexpr unsigned gains_interrupt_line = duet::hardware::interrupt_number("IPCC_RX1");
 
