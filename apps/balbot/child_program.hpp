@@ -33,8 +33,7 @@ using namespace std::chrono_literals;
 class TemporaryFile {
  public:
   explicit TemporaryFile(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() / ("balbot_test_" + std::to_string(::getpid()) + "_" + name)) {
-  }
+      : path_(std::filesystem::temp_directory_path() / ("balbot_test_" + std::to_string(::getpid()) + "_" + name)) {}
   ~TemporaryFile() { std::filesystem::remove(path_); }
   TemporaryFile(const TemporaryFile&) = delete;
   TemporaryFile& operator=(const TemporaryFile&) = delete;

@@ -93,8 +93,8 @@ TEST(BalbotPil, TenSecondsOnTheEmulatedCortexM4BalanceWithoutOverrunsAndMatchThe
   auto sil_text = read_text_file(sil_robot.path());
   ASSERT_TRUE(pil_text.ok() && sil_text.ok());
   if (pil_text.value() != sil_text.value()) {
-    const auto [differs, _] = std::mismatch(sil_text.value().begin(), sil_text.value().end(),
-                                            pil_text.value().begin(), pil_text.value().end());
+    const auto [differs, _] = std::mismatch(sil_text.value().begin(), sil_text.value().end(), pil_text.value().begin(),
+                                            pil_text.value().end());
     FAIL() << "the robot's recordings differ from line " << std::count(sil_text.value().begin(), differs, '\n') + 1;
   }
   ASSERT_FALSE(signals.empty()) << console_text.value();

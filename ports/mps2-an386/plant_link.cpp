@@ -51,7 +51,8 @@ bool PlantLink::connect(std::string_view to_plant, std::string_view from_plant, 
   send(link::encode_hello(frame_, {link::protocol_version, link::LinkMode::lock_step, base_period_ns}));
   if (!expect(FrameKind::hello_ok)) return false;
   link::HelloOk hello_ok;
-  if (link::parse(decoder_.payload(), hello_ok) != link::FrameError::none || hello_ok.version != link::protocol_version) {
+  if (link::parse(decoder_.payload(), hello_ok) != link::FrameError::none ||
+      hello_ok.version != link::protocol_version) {
     fail("the plant answered HELLO with a bad HELLO_OK");
   }
   return ok();

@@ -59,7 +59,8 @@ constexpr auto device_interrupt_handlers = [] {
   static_assert(software.size() == board::software_interrupt_count);
   for (unsigned line = 0; line < software.size(); ++line)
     handlers[board::first_software_interrupt + line] = software[line];
-  for (const board::PlantInterrupt& interrupt : board::plant_interrupts) handlers[interrupt.line] = PlantInterrupt_IRQHandler;
+  for (const board::PlantInterrupt& interrupt : board::plant_interrupts)
+    handlers[interrupt.line] = PlantInterrupt_IRQHandler;
   return handlers;
 }();
 

@@ -1,7 +1,7 @@
 // A stand-in for qemu-system-arm in `duet pil`'s tests (--qemu): takes QEMU's command line as duet pil writes it,
 // and plays a firmware that opens the plant's pipes (semihosting "--link FOLDER", as the real firmware does), ticks
-// at 1 ms in lock-step for the semihosting "--duration S" (or until a signal) and speaks the console protocol on standard
-// output. The "firmware image" (-kernel FILE) is a few KEY=VALUE lines that say how to misbehave:
+// at 1 ms in lock-step for the semihosting "--duration S" (or until a signal) and speaks the console protocol on
+// standard output. The "firmware image" (-kernel FILE) is a few KEY=VALUE lines that say how to misbehave:
 //   exit_code=N   the exit code at the end (default 0)
 //   connect=0     end at once without connecting to the plant
 //   garbage=1     send a frame of no known kind after HELLO

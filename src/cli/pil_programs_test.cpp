@@ -8,31 +8,32 @@ namespace {
 
 TEST(PilPrograms, QemuWithTheFirmwareItsUartsAndItsArguments) {
   const QemuSetup setup{"qemu-system-arm", "build/balbot-pil.elf", 3, 2.5, "/tmp/duet-pil-abc"};
-  const std::vector<std::string> expected{"qemu-system-arm",
-                                          "-machine",
-                                          "mps2-an386",
-                                          "-nographic",
-                                          "-monitor",
-                                          "none",
-                                          "-kernel",
-                                          "build/balbot-pil.elf",
-                                          "-icount",
-                                          "shift=3,align=off,sleep=off",  //
-                                          "-semihosting-config",
-                                          "enable=on,target=native,arg=balbot-pil.elf,arg=--link,arg=/tmp/duet-pil-abc,arg=--duration,"
-                                          "arg=2.5",
-                                          "-chardev",
-                                          "socket,id=xcp,path=/tmp/duet-pil-abc/xcp.sock,server=on,wait=off",
-                                          "-serial",
-                                          "chardev:xcp",
-                                          "-chardev",
-                                          "socket,id=app,path=/tmp/duet-pil-abc/app.sock,server=on,wait=off",
-                                          "-serial",
-                                          "chardev:app",
-                                          "-serial",
-                                          "null",  //
-                                          "-serial",
-                                          "stdio"};
+  const std::vector<std::string> expected{
+      "qemu-system-arm",
+      "-machine",
+      "mps2-an386",
+      "-nographic",
+      "-monitor",
+      "none",
+      "-kernel",
+      "build/balbot-pil.elf",
+      "-icount",
+      "shift=3,align=off,sleep=off",  //
+      "-semihosting-config",
+      "enable=on,target=native,arg=balbot-pil.elf,arg=--link,arg=/tmp/duet-pil-abc,arg=--duration,"
+      "arg=2.5",
+      "-chardev",
+      "socket,id=xcp,path=/tmp/duet-pil-abc/xcp.sock,server=on,wait=off",
+      "-serial",
+      "chardev:xcp",
+      "-chardev",
+      "socket,id=app,path=/tmp/duet-pil-abc/app.sock,server=on,wait=off",
+      "-serial",
+      "chardev:app",
+      "-serial",
+      "null",  //
+      "-serial",
+      "stdio"};
   EXPECT_EQ(qemu_command(setup), expected);
 }
 

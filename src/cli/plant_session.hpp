@@ -8,8 +8,8 @@
 #include <optional>
 #include <thread>
 
-#include "duet/link/serve.hpp"
 #include "duet/link/named_pipes.hpp"
+#include "duet/link/serve.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/support/result.hpp"
 

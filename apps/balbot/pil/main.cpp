@@ -14,6 +14,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "balbot.hpp"
+#include "command_line.hpp"
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/cortex_m/interrupts.hpp"
@@ -22,8 +24,6 @@
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
 #include "duet/rt/executive.hpp"
-#include "balbot.hpp"
-#include "command_line.hpp"
 #include "robot_firmware.hpp"
 #include "status_report.hpp"
 
@@ -71,7 +71,8 @@ bool map_plant_interrupts(duet::TextBuffer<200>& problem) {
     const rt::Task& task = model.tasks[index];
     if (task.kind != rt::TaskKind::interrupt) continue;
     bool plant_line = false;
-    for (const board::PlantInterrupt& interrupt : board::plant_interrupts) plant_line |= interrupt.line == task.interrupt;
+    for (const board::PlantInterrupt& interrupt : board::plant_interrupts)
+      plant_line |= interrupt.line == task.interrupt;
     if (!plant_line) {
       problem.append("task ").append(task.name).append(" is not triggered by an interrupt of the plant");
       return false;

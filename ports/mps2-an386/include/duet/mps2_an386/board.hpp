@@ -55,9 +55,9 @@ struct PlantInterrupt {
   std::string_view name;
   unsigned line;
 };
-inline constexpr PlantInterrupt plant_interrupts[] = {
-    {"EXTI8", 6},  {"DMA2_Stream2", 7}, {"DMA2_Stream3", 11}, {"DMA2_Stream4", 14}, {"TIM1", 15},
-    {"TIM2", 16},  {"TIM4", 17},        {"TIM5", 22},         {"IPCC_RX1", 23}};
+inline constexpr PlantInterrupt plant_interrupts[] = {{"EXTI8", 6},         {"DMA2_Stream2", 7}, {"DMA2_Stream3", 11},
+                                                      {"DMA2_Stream4", 14}, {"TIM1", 15},        {"TIM2", 16},
+                                                      {"TIM4", 17},         {"TIM5", 22},        {"IPCC_RX1", 23}};
 
 // Brings up what the board hooks need (the console, UART0 unless select_console() chose another). Call first in main.
 void initialize();
