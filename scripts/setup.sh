@@ -19,6 +19,8 @@ packages=(
   googletest libgtest-dev libgmock-dev libbenchmark-dev clang-format clang-tidy
   # the bridge's benchmark compares with socat
   socat
+  # docs/VERIFICATION.md loads the machine with stress-ng for the thesis' real-time test
+  stress-ng
   # duet model render draws block diagrams with Graphviz
   graphviz
   # fuzzing (libFuzzer comes with clang's runtime libraries)

@@ -14,6 +14,7 @@
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
+#include "duet/mps2_an386/microsecond_clock.hpp"
 #include "duet/mps2_an386/uart_line.hpp"
 #include "duet/xcp/stream_transport.hpp"
 #include "robot_firmware.hpp"
@@ -32,21 +33,6 @@ constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::res
 void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
   const cortex_m::InterruptMask masked;
   std::memcpy(destination, bytes.data(), bytes.size());
-}
-// DAQ timestamps in the unit the generated A2L declares (TIMESTAMP_SUPPORTED ... UNIT_1US): microseconds from the
-// 25 MHz cycle counter, counted on across its wrap; tasks of every priority stamp, hence the mask.
-std::uint32_t timestamp() {
-  static std::uint32_t last_cycles = 0;
-  static std::uint32_t cycles_left = 0;  // below one microsecond
-  static std::uint32_t microseconds = 0;
-  constexpr std::uint32_t cycles_per_microsecond = board::peripheral_clock_hz / 1'000'000U;
-  const cortex_m::InterruptMask masked;
-  const std::uint32_t now = board::ExecutivePort{}.cycles();
-  cycles_left += now - last_cycles;
-  last_cycles = now;
-  microseconds += cycles_left / cycles_per_microsecond;
-  cycles_left %= cycles_per_microsecond;
-  return microseconds;
 }
 
 constexpr std::size_t max_cto = 248;
@@ -69,8 +55,8 @@ const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions
                                                 .events = balbot::xcp::events,
                                                 .daq = {daq_lists, odts, odt_entries},
                                                 .queue = &xcp_queue,
-                                                .timestamp = timestamp,
-                                                .timestamp_unit = 3,  // 1 us
+                                                .timestamp = board::elapsed_microseconds,  // the A2L's unit
+                                                .timestamp_unit = 3,                       // 1 us
                                                 .timestamp_ticks = 1};
 xcp::Slave slave{xcp_configuration};
 std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};

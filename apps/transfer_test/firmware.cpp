@@ -1,0 +1,168 @@
+// The thesis' XCP transfer test on the emulated Cortex-M4: the model transfer_test.yaml as duet gen generated it
+// (generated/), stepped every 1 ms by the executive on the board's timer, with its XCP slave on UART0 (the channel
+// duet-bridge relays, as /dev/ttyRPMSG0 on the board). The master is the PC's: `transfer_test --connect` through the
+// bridge downloads the table, starts DAQ and the play-out, and checks what comes back (main.cpp, run_on_qemu.sh).
+//
+// The console (UART3, as in the robot's firmware) gets every second of model time what the executive is doing, in
+// the key=value lines `duet pil` reads:
+//
+//   duet-status time_s=1.000 ticks=1000 busy_ppm=1234 overruns=0
+//   duet-task index=0 name=rate_1 activations=1000 overruns=0 min_cycles=... mean_cycles=... max_cycles=...
+//   duet-channels xcp_received=... xcp_sent=...
+//
+// It runs until QEMU is stopped.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <span>
+
+#include "duet/base/text_buffer.hpp"
+#include "duet/cortex_m/board_hooks.hpp"
+#include "duet/cortex_m/interrupts.hpp"
+#include "duet/mps2_an386/board.hpp"
+#include "duet/mps2_an386/cmsdk_uart.hpp"
+#include "duet/mps2_an386/executive_port.hpp"
+#include "duet/mps2_an386/microsecond_clock.hpp"
+#include "duet/mps2_an386/uart_line.hpp"
+#include "duet/rt/executive.hpp"
+#include "duet/xcp/slave.hpp"
+#include "duet/xcp/stream_transport.hpp"
+#include "transfer_test.hpp"
+#include "transfer_test_xcp.hpp"
+
+namespace {
+
+namespace board = duet::mps2_an386;
+namespace cortex_m = duet::cortex_m;
+namespace rt = duet::rt;
+namespace xcp = duet::xcp;
+
+constexpr unsigned console_uart = 3;
+
+void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
+  const cortex_m::InterruptMask masked;
+  std::memcpy(destination, bytes.data(), bytes.size());
+}
+
+// XCP: the model's calibration segment (the table, `playing`) and signals at the A2L's addresses, an event per task.
+// The queue holds the whole play-out's DAQ packets (4096 of 11 bytes with their LEN/CTR: 45 KB), as the
+// software-in-the-loop test's does: a host that stalls for a while loses nothing.
+constexpr std::size_t max_cto = 248;
+constexpr std::size_t max_dto = 248;
+constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
+const std::array<xcp::CalibrationSegment, 1> segments{transfer_test::xcp::calibration_segment()};
+const std::array<xcp::MemoryRegion, 1> regions{transfer_test::xcp::signals_region()};
+std::array<xcp::DaqList, 1> daq_lists{};
+std::array<xcp::Odt, 1> odts{};
+std::array<xcp::OdtEntry, 1> odt_entries{};
+std::array<std::uint8_t, 64 * 1024> xcp_queue_storage{};
+std::array<std::uint8_t, 256> download_buffer{};
+xcp::TransmitQueue xcp_queue{xcp_queue_storage, interrupt_lock};
+const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions},
+                                                .segments = segments,
+                                                .max_cto = max_cto,
+                                                .max_dto = max_dto,
+                                                .identification = "transfer_test",
+                                                .write_atomically = write_with_interrupts_masked,
+                                                .download_buffer = download_buffer,
+                                                .events = transfer_test::xcp::events,
+                                                .daq = {daq_lists, odts, odt_entries},
+                                                .queue = &xcp_queue,
+                                                .timestamp = board::elapsed_microseconds};  // the A2L's unit
+xcp::Slave slave{xcp_configuration};
+std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
+std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
+xcp::StreamTransport xcp_transport{slave,   xcp_queue,        xcp::ethernet_framing, xcp_decoder_buffer,
+                                   max_cto, xcp_packet_buffer};
+board::UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base}, board::uart0_receive_interrupt,
+                                               board::uart0_transmit_interrupt};
+
+// The board's executive port, plus DAQ after every task and the console's report between ticks. Idles by spinning,
+// as the board's port does: under -icount a WFI would merge timer interrupts.
+class TransferTestPort : public board::ExecutivePort {
+ public:
+  void task_finished(std::size_t task) {
+    slave.on_event(static_cast<std::uint16_t>(task));
+    if (xcp_queue.free_bytes() != xcp_queue.capacity()) xcp_line.kick();
+  }
+  void idle();
+};
+
+constexpr std::size_t task_capacity = std::size(transfer_test::tasks);
+const rt::ModelDescription& model = transfer_test::description;
+TransferTestPort port;
+rt::Executive<TransferTestPort, task_capacity> executive{model, port};
+
+// The console's lines, every second of model time.
+class StatusReport {
+ public:
+  void between_ticks() {
+    if (executive.ticks() < next_report_) return;
+    next_report_ += ticks_per_report;
+    (void)board::elapsed_microseconds();  // asked at least once per wrap of the cycle counter, whether DAQ runs or not
+    report();
+  }
+
+ private:
+  static constexpr std::uint64_t ticks_per_report = 1'000'000'000U / transfer_test::description.base_period_ns;
+
+  void report() {
+    const std::uint64_t ticks = executive.ticks();
+    const std::uint64_t milliseconds = ticks * model.base_period_ns / 1'000'000U;
+    std::uint32_t overruns = 0;
+    for (std::size_t task = 0; task < model.tasks.size(); ++task) overruns += executive.statistics(task).overruns;
+    line_.clear();
+    line_.append("duet-status time_s=").append(milliseconds / 1000U).append('.');
+    for (std::uint64_t digit = 100; digit > 0; digit /= 10)
+      line_.append(static_cast<char>('0' + milliseconds / digit % 10));
+    line_.append(" ticks=").append(ticks).append(" busy_ppm=").append(executive.load().busy_ppm());
+    line_.append(" overruns=").append(overruns);
+    emit();
+    for (std::size_t task = 0; task < model.tasks.size(); ++task) {
+      const rt::TaskStatistics& statistics = executive.statistics(task);
+      line_.clear();
+      line_.append("duet-task index=").append(task).append(" name=");
+      for (const char character : model.tasks[task].name) line_.append(character == ' ' ? '_' : character);
+      line_.append(" activations=").append(statistics.activations).append(" overruns=").append(statistics.overruns);
+      line_.append(" min_cycles=").append(statistics.activations == 0 ? 0U : statistics.min_cycles);
+      line_.append(" mean_cycles=").append(statistics.mean_cycles());
+      line_.append(" max_cycles=").append(statistics.max_cycles);
+      emit();
+    }
+    line_.clear();
+    line_.append("duet-channels xcp_received=").append(xcp_line.bytes_received());
+    line_.append(" xcp_sent=").append(xcp_line.bytes_sent());
+    emit();
+  }
+
+  void emit() {
+    line_.append('\n');
+    cortex_m::console_write(line_.view());
+  }
+
+  duet::TextBuffer<200> line_;
+  std::uint64_t next_report_ = ticks_per_report;
+};
+StatusReport report;
+
+void TransferTestPort::idle() { report.between_ticks(); }
+
+}  // namespace
+
+DUET_MPS2_AN386_EXECUTIVE_HANDLERS(executive)
+extern "C" void UART0_RX_IRQHandler() { xcp_line.serve(xcp_transport); }
+extern "C" void UART0_TX_IRQHandler() { xcp_line.serve(xcp_transport); }
+
+int main() {
+  board::select_console(console_uart);
+  board::initialize();
+  xcp_line.start();
+  cortex_m::console_write("transfer test: XCP on UART0, the 1 ms step on timer0\n");
+  if (!board::run_model(executive, model)) {
+    cortex_m::console_write("error: the model does not fit the board\n");
+    return 2;
+  }
+  return 0;
+}
