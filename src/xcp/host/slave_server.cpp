@@ -142,6 +142,16 @@ void SlaveServer::serve() {
       std::uint64_t ignored = 0;
       [[maybe_unused]] const ssize_t read = ::read(wake_, &ignored, sizeof(ignored));
     }
+    // The master's bytes first: a master that left and another that came in the same wait are served one after the
+    // other, not refused as a second master.
+    if (master_ >= 0 && (watched[2].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
+      const ssize_t received = ::recv(master_, buffer.data(), buffer.size(), 0);
+      if (received <= 0) {
+        drop_master();
+      } else {
+        handle_bytes(std::span{buffer}.first(static_cast<std::size_t>(received)));
+      }
+    }
     if ((watched[0].revents & POLLIN) != 0) {
       if (protocol_ == Protocol::tcp) {
         const int accepted = ::accept4(listener_, nullptr, nullptr, SOCK_CLOEXEC);
@@ -164,14 +174,6 @@ void SlaveServer::serve() {
           decoder_.reset();  // a datagram holds whole frames
           handle_bytes(std::span{buffer}.first(static_cast<std::size_t>(received)));
         }
-      }
-    }
-    if (master_ >= 0 && (watched[2].revents & (POLLIN | POLLHUP | POLLERR)) != 0) {
-      const ssize_t received = ::recv(master_, buffer.data(), buffer.size(), 0);
-      if (received <= 0) {
-        drop_master();
-      } else {
-        handle_bytes(std::span{buffer}.first(static_cast<std::size_t>(received)));
       }
     }
     drain_queue();
