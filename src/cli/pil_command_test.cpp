@@ -182,8 +182,12 @@ TEST(PilCommand, TheBridgeRelaysAndReportsItsCounters) {
       run({"pil", firmware.path(), "--qemu", DUET_FAKE_QEMU, "--bridge", DUET_BRIDGE_PROGRAM, "--xcp", "127.0.0.1:0",
            "--websocket", "127.0.0.1:0", "--lock-step", "--duration", "0.2"});
   EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
-  EXPECT_TRUE(contains(outcome.out, "  XCP        tcp://127.0.0.1:0 (A2L: apps/balbot/generated/balbot.a2l)"))
-      << outcome.out;
+  // Where the bridge listens, with the ports it took for port 0.
+  EXPECT_TRUE(contains(outcome.out, "  XCP        tcp://127.0.0.1:")) << outcome.out;
+  EXPECT_FALSE(contains(outcome.out, "tcp://127.0.0.1:0 ")) << outcome.out;
+  EXPECT_TRUE(contains(outcome.out, " (A2L: apps/balbot/generated/balbot.a2l)")) << outcome.out;
+  EXPECT_TRUE(contains(outcome.out, "  telemetry  ws://127.0.0.1:")) << outcome.out;
+  EXPECT_FALSE(contains(outcome.out, "ws://127.0.0.1:0 ")) << outcome.out;
   EXPECT_TRUE(contains(outcome.out,
                        "  xcp       0 frames to the slave (0 bytes), 0 to the master (0 bytes), 0 DAQ frames dropped, "
                        "0 masters served\n"))

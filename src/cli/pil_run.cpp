@@ -65,6 +65,38 @@ void make_non_blocking(int fd) {
   if (fd >= 0) ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
 }
 
+// The bridge's first lines, up to the two that say where it listens (its port 0 becomes a real port there), so that
+// a run does not start before its bridge can be reached, and a short one does not stop the bridge before it can
+// report its counters. Empty addresses: it ended first or did not say within 10 s.
+struct BridgeStart {
+  LineSplitter lines;
+  std::string output;
+  std::string xcp;        // HOST:PORT
+  std::string websocket;  // HOST:PORT
+};
+
+BridgeStart wait_until_listening(ChildProcess& bridge) {
+  BridgeStart start;
+  make_non_blocking(bridge.errors_fd());
+  const auto address_after = [](const std::string& line, std::string_view label) {
+    const std::size_t at = line.find(label);
+    if (at == std::string::npos) return std::string{};
+    const std::size_t begin = at + label.size();
+    return line.substr(begin, line.find(' ', begin) - begin);
+  };
+  const auto deadline = Clock::now() + 10s;
+  while ((start.xcp.empty() || start.websocket.empty()) && !start.lines.ended() && Clock::now() < deadline) {
+    pollfd watched{bridge.errors_fd(), POLLIN, 0};
+    ::poll(&watched, 1, 100);
+    for (const std::string& line : start.lines.read(bridge.errors_fd())) {
+      start.output += line + '\n';
+      if (start.xcp.empty()) start.xcp = address_after(line, "listening for an XCP master on ");
+      if (start.websocket.empty()) start.websocket = address_after(line, "WebSocket clients on ");
+    }
+  }
+  return start;
+}
+
 // Why watching the run ended.
 enum class Ending : std::uint8_t { signal, qemu_exited, plant_failed, qemu_lingered, bridge_exited };
 
@@ -72,11 +104,18 @@ enum class Ending : std::uint8_t { signal, qemu_exited, plant_failed, qemu_linge
 // everything in order.
 class Supervisor {
  public:
-  Supervisor(Streams streams, std::ofstream& console, ChildProcess& qemu, ChildProcess* bridge, PlantSession& session)
-      : streams_(streams), console_(console), qemu_(qemu), bridge_(bridge), session_(session) {
+  // `bridge_start`: what the bridge said before the run began (wait_until_listening).
+  Supervisor(Streams streams, std::ofstream& console, ChildProcess& qemu, ChildProcess* bridge, PlantSession& session,
+             BridgeStart bridge_start)
+      : streams_(streams),
+        console_(console),
+        qemu_(qemu),
+        bridge_(bridge),
+        session_(session),
+        bridge_errors_(std::move(bridge_start.lines)),
+        bridge_output_(std::move(bridge_start.output)) {
     make_non_blocking(qemu_.output_fd());
     make_non_blocking(qemu_.errors_fd());
-    if (bridge_ != nullptr) make_non_blocking(bridge_->errors_fd());
   }
 
   Ending watch(StopSignals& signals) {
@@ -282,11 +321,21 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
     if (!started) return fail(started.error() + " (build the target duet-bridge, give --bridge PATH, or --no-bridge)");
     bridge.emplace(std::move(started).value());
   }
+  BridgeStart bridge_start;
+  PilOptions listening = options;  // with the ports the bridge took
+  if (bridge) {
+    bridge_start = wait_until_listening(*bridge);
+    if (bridge_start.xcp.empty() || bridge_start.websocket.empty()) {
+      return fail("duet-bridge did not start listening:\n" + bridge_start.output);
+    }
+    listening.xcp = bridge_start.xcp;
+    listening.websocket = bridge_start.websocket;
+  }
   const Clock::time_point start = Clock::now();
   PlantSession session{std::move(pipes).value(), plant, {.paced = !options.lock_step}, 10s};
-  print_how_to_connect(options, folder.value().path(), streams.out);
+  print_how_to_connect(listening, folder.value().path(), streams.out);
 
-  Supervisor supervisor{streams, console, qemu.value(), bridge ? &*bridge : nullptr, session};
+  Supervisor supervisor{streams, console, qemu.value(), bridge ? &*bridge : nullptr, session, std::move(bridge_start)};
   const Ending ending = supervisor.watch(signals);
   const bool session_ended_first = session.finished();
   supervisor.stop_children();
