@@ -24,6 +24,7 @@
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
+#include "duet/mps2_an386/executive_report.hpp"
 #include "duet/mps2_an386/microsecond_clock.hpp"
 #include "duet/mps2_an386/uart_line.hpp"
 #include "duet/rt/executive.hpp"
@@ -109,28 +110,7 @@ class StatusReport {
   static constexpr std::uint64_t ticks_per_report = 1'000'000'000U / transfer_test::description.base_period_ns;
 
   void report() {
-    const std::uint64_t ticks = executive.ticks();
-    const std::uint64_t milliseconds = ticks * model.base_period_ns / 1'000'000U;
-    std::uint32_t overruns = 0;
-    for (std::size_t task = 0; task < model.tasks.size(); ++task) overruns += executive.statistics(task).overruns;
-    line_.clear();
-    line_.append("duet-status time_s=").append(milliseconds / 1000U).append('.');
-    for (std::uint64_t digit = 100; digit > 0; digit /= 10)
-      line_.append(static_cast<char>('0' + milliseconds / digit % 10));
-    line_.append(" ticks=").append(ticks).append(" busy_ppm=").append(executive.load().busy_ppm());
-    line_.append(" overruns=").append(overruns);
-    emit();
-    for (std::size_t task = 0; task < model.tasks.size(); ++task) {
-      const rt::TaskStatistics& statistics = executive.statistics(task);
-      line_.clear();
-      line_.append("duet-task index=").append(task).append(" name=");
-      for (const char character : model.tasks[task].name) line_.append(character == ' ' ? '_' : character);
-      line_.append(" activations=").append(statistics.activations).append(" overruns=").append(statistics.overruns);
-      line_.append(" min_cycles=").append(statistics.activations == 0 ? 0U : statistics.min_cycles);
-      line_.append(" mean_cycles=").append(statistics.mean_cycles());
-      line_.append(" max_cycles=").append(statistics.max_cycles);
-      emit();
-    }
+    board::write_executive_report(executive, model);
     line_.clear();
     line_.append("duet-channels xcp_received=").append(xcp_line.bytes_received());
     line_.append(" xcp_sent=").append(xcp_line.bytes_sent());

@@ -23,6 +23,7 @@
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
+#include "duet/mps2_an386/executive_report.hpp"
 #include "duet/rt/executive.hpp"
 #include "robot_firmware.hpp"
 #include "status_report.hpp"
@@ -143,6 +144,6 @@ int main() {
   signals.append("balbot-signals theta_bits=").append_hex(std::bit_cast<std::uint32_t>(balbot::signals.theta));
   signals.append(" y_bits=").append_hex(std::bit_cast<std::uint32_t>(balbot::signals.y)).append('\n');
   cortex_m::console_write(signals.view());
-  const bool overran = report.total_overruns(executive) != 0;
+  const bool overran = board::total_overruns(executive, model) != 0;
   return link.ok() && !overran ? 0 : 1;
 }

@@ -15,6 +15,7 @@
 
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
+#include "duet/mps2_an386/executive_report.hpp"
 #include "duet/mps2_an386/plant_link.hpp"
 #include "duet/rt/executive.hpp"
 #include "robot_firmware.hpp"
@@ -47,40 +48,15 @@ class StatusReport {
     status(executive);
     line_.clear();
     line_.append("duet-end reason=").append(reason(executive.stop_reason())).append(" ticks=");
-    line_.append(executive.ticks()).append(" overruns=").append(total_overruns(executive));
+    line_.append(executive.ticks()).append(" overruns=").append(duet::mps2_an386::total_overruns(executive, model_));
     line_.append(" link=").append(link.ok() ? std::string_view{"ok"} : link.error());
     emit();
-  }
-
-  template <typename Executive>
-  std::uint64_t total_overruns(const Executive& executive) const {
-    std::uint64_t overruns = 0;
-    for (std::size_t task = 0; task < model_.tasks.size(); ++task) overruns += executive.statistics(task).overruns;
-    return overruns;
   }
 
  private:
   template <typename Executive>
   void status(const Executive& executive) {
-    const std::uint64_t ticks = executive.ticks();
-    const std::uint64_t milliseconds = ticks * model_.base_period_ns / 1'000'000U;
-    line_.clear();
-    line_.append("duet-status time_s=").append(milliseconds / 1000U).append('.');
-    append_three_digits(milliseconds % 1000U);
-    line_.append(" ticks=").append(ticks).append(" busy_ppm=").append(executive.load().busy_ppm());
-    line_.append(" overruns=").append(total_overruns(executive));
-    emit();
-    for (std::size_t task = 0; task < model_.tasks.size(); ++task) {
-      const duet::rt::TaskStatistics& statistics = executive.statistics(task);
-      line_.clear();
-      line_.append("duet-task index=").append(task).append(" name=");
-      for (const char character : model_.tasks[task].name) line_.append(character == ' ' ? '_' : character);
-      line_.append(" activations=").append(statistics.activations).append(" overruns=").append(statistics.overruns);
-      line_.append(" min_cycles=").append(statistics.activations == 0 ? 0U : statistics.min_cycles);
-      line_.append(" mean_cycles=").append(statistics.mean_cycles());
-      line_.append(" max_cycles=").append(statistics.max_cycles);
-      emit();
-    }
+    duet::mps2_an386::write_executive_report(executive, model_);
     const HostChannelCounters counters = host_channel_counters();
     line_.clear();
     line_.append("duet-channels xcp_received=").append(counters.xcp_bytes_received);
@@ -89,12 +65,6 @@ class StatusReport {
     line_.append(" application_sent=").append(counters.application_bytes_sent);
     line_.append(" telemetry_dropped=").append(counters.telemetry_dropped);
     emit();
-  }
-
-  void append_three_digits(std::uint64_t value) {
-    if (value < 100U) line_.append('0');
-    if (value < 10U) line_.append('0');
-    line_.append(value);
   }
 
   static std::string_view reason(duet::rt::StopReason reason) {

@@ -1,0 +1,51 @@
+#pragma once
+// The executive's account on the console, in the key=value lines that `duet pil` and tests read (docs/LINK.md,
+// "Processor in the loop"): a duet-status line (model time, ticks, core load, overruns), then a duet-task line per
+// task (activations, overruns, net execution times in cycles of the board's 25 MHz timer).
+
+#include <cstddef>
+#include <cstdint>
+
+#include "duet/base/text_buffer.hpp"
+#include "duet/cortex_m/board_hooks.hpp"
+#include "duet/rt/task_statistics.hpp"
+#include "duet/rt/task_table.hpp"
+
+namespace duet::mps2_an386 {
+
+template <typename Executive>
+std::uint64_t total_overruns(const Executive& executive, const rt::ModelDescription& model) {
+  std::uint64_t overruns = 0;
+  for (std::size_t task = 0; task < model.tasks.size(); ++task) overruns += executive.statistics(task).overruns;
+  return overruns;
+}
+
+template <typename Executive>
+void write_executive_report(const Executive& executive, const rt::ModelDescription& model) {
+  TextBuffer<240> line;
+  const auto emit = [&line] {
+    line.append('\n');
+    cortex_m::console_write(line.view());
+    line.clear();
+  };
+  const std::uint64_t ticks = executive.ticks();
+  const std::uint64_t milliseconds = ticks * model.base_period_ns / 1'000'000U;
+  line.append("duet-status time_s=").append(milliseconds / 1000U).append('.');
+  for (std::uint64_t digit = 100; digit > 0; digit /= 10)
+    line.append(static_cast<char>('0' + milliseconds / digit % 10));
+  line.append(" ticks=").append(ticks).append(" busy_ppm=").append(executive.load().busy_ppm());
+  line.append(" overruns=").append(total_overruns(executive, model));
+  emit();
+  for (std::size_t task = 0; task < model.tasks.size(); ++task) {
+    const rt::TaskStatistics& statistics = executive.statistics(task);
+    line.append("duet-task index=").append(task).append(" name=");
+    for (const char character : model.tasks[task].name) line.append(character == ' ' ? '_' : character);
+    line.append(" activations=").append(statistics.activations).append(" overruns=").append(statistics.overruns);
+    line.append(" min_cycles=").append(statistics.activations == 0 ? 0U : statistics.min_cycles);
+    line.append(" mean_cycles=").append(statistics.mean_cycles());
+    line.append(" max_cycles=").append(statistics.max_cycles);
+    emit();
+  }
+}
+
+}  // namespace duet::mps2_an386
