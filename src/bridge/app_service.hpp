@@ -1,14 +1,15 @@
 #pragma once
 // The application channel on the Linux side: reads the firmware's telemetry and parameter reports from the second
 // inter-processor channel (/dev/ttyRPMSG1 on the board) and offers them to local clients
-//   - over WebSocket, as JSON messages (docs/APP_CHANNEL.md): the description, samples, parameter reports, status;
-//     clients set parameters by name;
+//   - to the dashboard (docs/DASHBOARD.md): its page over HTTP and, over WebSocket on the same port, JSON messages
+//     (the description, samples, parameter reports, status, the recorder); clients set parameters by name;
 //   - as CSV on standard output (a header from the description, then one line per sample), taking `name=value` lines
 //     on standard input as parameter sets.
 // The channel is retried when it goes away, and asked for its description whenever it (re)opens. Every queue is
 // bounded: a client that does not keep up loses samples (counted), never parameter reports or answers.
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -24,7 +25,8 @@ struct AppServiceOptions {
   std::string listen_address = "127.0.0.1";
   std::uint16_t websocket_port = 8765;  // 0: any free port
   bool websocket = true;
-  bool csv = false;  // CSV on standard output, sets on standard input
+  std::filesystem::path web_root;  // the dashboard's files, served over HTTP on the WebSocket's port
+  bool csv = false;                // CSV on standard output, sets on standard input
   std::size_t channel_chunk = 496;
   // Extra status, as a JSON object's text, merged into status messages (the XCP relay's counters).
   std::function<std::string()> extra_status;

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "app_service.hpp"
+#include "duet/dashboard/static_files.hpp"
 #include "duet/version.hpp"
 #include "relay.hpp"
 
@@ -87,6 +88,7 @@ int run(int argc, char** argv) {
   std::string app_channel;
   std::string websocket = "127.0.0.1:8765";
   bool no_websocket = false;
+  std::string web = duet::dashboard::default_web_root().string();
   bool csv = false;
   bool expose = false;
   bool verbose = false;
@@ -95,6 +97,9 @@ int run(int argc, char** argv) {
   app.add_option("--app-channel", app_channel, "The application channel: tty:/dev/ttyRPMSG1, unix:/path or tcp://...");
   app.add_option("--websocket", websocket, "Address:port for WebSocket clients (localhost unless --expose)");
   app.add_flag("--no-websocket", no_websocket, "Offer the application channel as CSV only");
+  app.add_option("--web", web, "The dashboard's built files, served on the WebSocket's port")
+      ->capture_default_str()
+      ->check(CLI::ExistingDirectory);
   app.add_flag("--csv", csv, "Print the application's telemetry as CSV on stdout; name=value lines on stdin set");
   app.add_flag("--expose", expose, "Allow listening on addresses other than 127.0.0.1 (the network)");
   app.add_flag("--verbose", verbose, "Log every master that connects and leaves");
@@ -139,6 +144,7 @@ int run(int argc, char** argv) {
     options.listen_address = endpoint.value().address;
     options.websocket_port = endpoint.value().port;
     options.websocket = !no_websocket;
+    options.web_root = web;
     options.csv = csv;
     options.verbose = verbose;
     if (relay) options.extra_status = [&relay] { return relay_status_json(*relay); };
@@ -164,8 +170,10 @@ int run(int argc, char** argv) {
       return 1;
     }
     if (!no_websocket) {
-      std::cerr << "duet-bridge: WebSocket clients on " << websocket.substr(0, websocket.rfind(':')) << ':'
-                << service->websocket_port() << std::endl;
+      const std::string address =
+          websocket.substr(0, websocket.rfind(':')) + ':' + std::to_string(service->websocket_port());
+      std::cerr << "duet-bridge: WebSocket clients on " << address << std::endl;
+      std::cerr << "duet-bridge: dashboard on http://" << address << "/" << std::endl;
     }
     service_thread = std::thread{[&service] { service->run(); }};
   }

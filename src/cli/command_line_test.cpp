@@ -63,10 +63,10 @@ TEST(CommandLine, NoSubcommandIsAUsageError) {
   EXPECT_NE(outcome.err.find("duet --help"), std::string::npos) << outcome.err;
 }
 
-TEST(CommandLine, PlannedSubcommandSaysSoAndFails) {
-  const Outcome outcome = run({"monitor"});
-  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
-  EXPECT_EQ(outcome.err, "duet monitor: not implemented yet (planned in issue #10)\n");
+TEST(CommandLine, MonitorNeedsAnA2lFile) {
+  const Outcome outcome = run({"monitor", "--xcp", "tcp://127.0.0.1:5555"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_NE(outcome.err.find("--a2l"), std::string::npos) << outcome.err;
 }
 
 }  // namespace

@@ -1,0 +1,104 @@
+#include "monitor_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <boost/asio.hpp>
+#include <poll.h>
+
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "duet/dashboard/static_files.hpp"
+#include "duet/link/tcp.hpp"
+#include "duet/support/text_file.hpp"
+#include "host_port_validator.hpp"
+#include "monitor_target.hpp"
+#include "stop_signals.hpp"
+
+namespace duet::cli {
+namespace {
+
+struct MonitorCommandOptions {
+  std::string xcp;
+  std::string a2l_file;
+  std::vector<std::string> signals;
+  std::string event;
+  std::string listen = "127.0.0.1:8766";
+  bool expose = false;
+  std::string web = dashboard::default_web_root().string();
+  int timeout_ms = 1000;
+};
+
+ExitCode fail(Streams streams, const std::string& message) {
+  streams.err << "duet monitor: " << message << '\n';
+  return ExitCode::failure;
+}
+
+ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
+  auto listen = link::parse_host_port(options.listen).value();  // checked by the validator
+  if (listen.host != "127.0.0.1" && !options.expose) {
+    streams.err << "duet monitor: --listen " << options.listen
+                << " would reach beyond this machine: add --expose to mean it\n";
+    return ExitCode::usage;
+  }
+  auto text = read_text_file(options.a2l_file);
+  if (!text) return fail(streams, text.error());
+  auto a2l = xcp::host::read_a2l(text.value(), options.a2l_file);
+  if (!a2l) return fail(streams, a2l.error());
+  xcp::host::Endpoint target = a2l.value().transport;
+  if (!options.xcp.empty()) {
+    auto parsed = xcp::host::parse_endpoint(options.xcp);
+    if (!parsed) return fail(streams, "--xcp " + parsed.error());
+    target = parsed.value();
+  }
+
+  boost::asio::io_context io;
+  auto monitor = MonitorTarget::create(
+      io,
+      MonitorOptions{
+          .target = target,
+          .a2l = std::move(a2l).value(),
+          .signals = options.signals,
+          .event = options.event,
+          .server = {.address = listen.host, .port = listen.port, .web_root = options.web, .log_name = "duet monitor"},
+          .timeout_ms = options.timeout_ms});
+  if (!monitor) return fail(streams, monitor.error());
+  StopSignals stop;
+  if (Status started = monitor.value()->start(); !started) return fail(streams, started.error());
+  streams.out << "duet monitor: dashboard on http://" << listen.host << ':' << monitor.value()->port()
+              << "/ for the target at " << xcp::host::to_string(target) << " (Ctrl-C stops)" << std::endl;
+  std::thread serving{[&io] { io.run(); }};
+  pollfd signal_fd{stop.fd(), POLLIN, 0};
+  while (!stop.received()) ::poll(&signal_fd, 1, -1);
+  io.stop();
+  serving.join();
+  monitor.value()->stop();
+  streams.out << "duet monitor: stopped\n";
+  return ExitCode::success;
+}
+
+}  // namespace
+
+Action define_monitor_command(CLI::App& command) {
+  auto options = std::make_shared<MonitorCommandOptions>();
+  command.add_option("--xcp", options->xcp,
+                     "The target's XCP: tcp://host:port or udp://host:port (default: the A2L's)");
+  command.add_option("--a2l", options->a2l_file, "The target's A2L file (signals, parameters, events)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command.add_option("--signal", options->signals, "A MEASUREMENT to sample by DAQ (repeat; default: every one)");
+  command.add_option("--event", options->event, "The DAQ event, by name or number (default: the fastest periodic one)");
+  command.add_option("--listen", options->listen, "Address:port of the dashboard (HTTP and WebSocket)")
+      ->capture_default_str()
+      ->check(host_port_validator());
+  command.add_flag("--expose", options->expose, "Allow listening on addresses other than 127.0.0.1 (the network)");
+  command.add_option("--web", options->web, "The dashboard's built files (web/dist)")
+      ->capture_default_str()
+      ->check(CLI::ExistingDirectory);
+  command.add_option("--timeout-ms", options->timeout_ms, "How long an XCP command may wait for its answer")
+      ->capture_default_str()
+      ->check(CLI::Range(10, 60'000));
+  return [options](Streams streams) { return run_monitor(*options, streams); };
+}
+
+}  // namespace duet::cli

@@ -1,0 +1,365 @@
+#include "monitor_target.hpp"
+
+#include <boost/asio.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <thread>
+
+#include "duet/dashboard/dashboard.hpp"
+#include "duet/xcp/host/master.hpp"
+#include "duet/xcp/host/values.hpp"
+
+namespace duet::cli {
+namespace {
+
+using namespace duet::xcp::host;
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+constexpr auto block_period = std::chrono::milliseconds{20};
+constexpr auto daq_wait = std::chrono::milliseconds{5};
+constexpr auto longest_retry = std::chrono::milliseconds{2000};
+
+// One element of a MEASUREMENT or CHARACTERISTIC: arrays show as NAME[0], NAME[1], ...
+struct Element {
+  const Variable* variable = nullptr;
+  std::uint32_t index = 0;
+  [[nodiscard]] std::string name() const {
+    return variable->count > 1 ? variable->name + "[" + std::to_string(index) + "]" : variable->name;
+  }
+  [[nodiscard]] std::uint32_t address() const {
+    return variable->address + index * static_cast<std::uint32_t>(size_of(variable->type));
+  }
+  [[nodiscard]] std::size_t size() const { return size_of(variable->type); }
+};
+
+std::string type_name(DataType type) {
+  static constexpr const char* names[] = {"uint8", "int8",   "uint16", "int16",   "uint32",
+                                          "int32", "uint64", "int64",  "float32", "float64"};
+  return names[static_cast<std::size_t>(type)];
+}
+
+dashboard::Item item_of(const Element& element) {
+  return {element.name(), element.variable->unit, type_name(element.variable->type), element.variable->minimum,
+          element.variable->maximum};
+}
+
+std::vector<Element> elements_of(const Variable& variable) {
+  std::vector<Element> elements;
+  for (std::uint32_t index = 0; index < variable.count; ++index) elements.push_back({&variable, index});
+  return elements;
+}
+
+double seconds_per_unit(std::uint8_t code) {
+  static constexpr double seconds[] = {1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0};
+  return code < std::size(seconds) ? seconds[code] : 1e-6;
+}
+
+double period_s(const EventInfo& event) { return seconds_per_unit(event.time_unit) * event.time_cycle; }
+
+}  // namespace
+
+class MonitorTarget::Impl {
+ public:
+  Impl(boost::asio::io_context& io, MonitorOptions options) : io_(io), options_(std::move(options)) {}
+
+  Status choose() {
+    const A2lDescription& a2l = options_.a2l;
+    if (options_.signals.empty()) {
+      for (const Variable& variable : a2l.measurements) options_.signals.push_back(variable.name);
+    }
+    for (const std::string& name : options_.signals) {
+      const auto found = std::find_if(a2l.measurements.begin(), a2l.measurements.end(),
+                                      [&](const Variable& variable) { return variable.name == name; });
+      if (found == a2l.measurements.end())
+        return Failure{"--signal " + name + ": no MEASUREMENT of that name in the A2L"};
+      for (const Element& element : elements_of(*found)) signals_.push_back(element);
+    }
+    for (const Variable& variable : a2l.characteristics) {
+      for (const Element& element : elements_of(variable)) parameters_.push_back(element);
+    }
+    parameter_values_.assign(parameters_.size(), std::nullopt);
+    for (const EventInfo& info : a2l.events) {
+      if (options_.event.empty() ? info.time_cycle != 0 && (!event_ || period_s(info) < period_s(*event_))
+                                 : info.name == options_.event || std::to_string(info.channel) == options_.event)
+        event_ = info;
+    }
+    if (!event_ && !options_.event.empty()) return Failure{"--event " + options_.event + ": no such event in the A2L"};
+    if (!event_ && !signals_.empty())
+      return Failure{"the A2L has no periodic event to sample the signals on: give --event"};
+    return done();
+  }
+
+  Status start() {
+    dashboard_.emplace(io_, options_.server,
+                       dashboard::Backend{.set = [this](dashboard::Client& client, const std::string& name,
+                                                        double value) { set(client, name, value); },
+                                          .describe = [this](dashboard::Client&) { describe(); },
+                                          .status = [this] { return status(); }});
+    if (Status started = dashboard_->start(); !started) return started;
+    describe();
+    worker_ = std::thread{[this] { work(); }};
+    return done();
+  }
+
+  void stop() {
+    {
+      const std::lock_guard lock{mutex_};
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    if (worker_.joinable()) worker_.join();
+    if (dashboard_) dashboard_->close();
+  }
+
+  [[nodiscard]] std::uint16_t port() const { return dashboard_ ? dashboard_->port() : 0; }
+
+ private:
+  struct Write {
+    std::size_t parameter = 0;
+    std::vector<std::uint8_t> bytes;
+  };
+
+  // On the io thread.
+  void describe() {
+    dashboard::Description description{options_.a2l.module.empty() ? options_.a2l.project : options_.a2l.module,
+                                       "monitor",
+                                       event_ ? static_cast<std::uint32_t>(period_s(*event_) * 1e6 + 0.5) : 0,
+                                       {},
+                                       {}};
+    for (const Element& element : signals_) description.telemetry.push_back(item_of(element));
+    for (const Element& element : parameters_) description.parameters.push_back(item_of(element));
+    dashboard_->describe(std::move(description));
+    for (std::size_t index = 0; index < parameter_values_.size(); ++index) {
+      if (parameter_values_[index]) dashboard_->parameter(index, parameter_values_[index], "reported");
+    }
+  }
+
+  void set(dashboard::Client& client, const std::string& name, double value) {
+    const auto found = std::find_if(parameters_.begin(), parameters_.end(),
+                                    [&](const Element& element) { return element.name() == name; });
+    if (found == parameters_.end()) return client.error("set: '" + name + "' is no parameter (CHARACTERISTIC)");
+    auto bytes = encode(*found->variable, value);
+    if (!bytes) return client.error("set " + name + ": " + bytes.error());
+    {
+      const std::lock_guard lock{mutex_};
+      writes_.push_back({static_cast<std::size_t>(found - parameters_.begin()), std::move(bytes).value()});
+    }
+    wake_.notify_all();
+  }
+
+  // Thread-safe.
+  json status() const {
+    json link = {{"state", link_state_name()}, {"address", to_string(options_.target)}};
+    {
+      const std::lock_guard lock{mutex_};
+      if (!link_problem_.empty()) link["problem"] = link_problem_;
+    }
+    return {{"link", link},
+            {"xcp",
+             {{"event", event_ ? event_->name : ""},
+              {"signals", signals_.size()},
+              {"connects", connects_.load()},
+              {"samples", samples_.load()},
+              {"packets_lost", packets_lost_.load()},
+              {"overloads", overloads_.load()},
+              {"writes", writes_done_.load()},
+              {"writes_failed", writes_failed_.load()}}}};
+  }
+
+  enum class LinkState { connecting, open, closed };
+  [[nodiscard]] std::string link_state_name() const {
+    switch (link_state_.load()) {
+      case LinkState::connecting: return "connecting";
+      case LinkState::open: return "open";
+      case LinkState::closed: return "closed";
+    }
+    return "?";
+  }
+
+  // On the worker thread from here on.
+  void work() {
+    auto retry = std::chrono::milliseconds{100};
+    while (!stopping()) {
+      link_state_ = LinkState::connecting;
+      Status session = serve_session();
+      if (stopping()) break;
+      {
+        const std::lock_guard lock{mutex_};
+        link_problem_ = session ? std::string{} : session.error();
+      }
+      link_state_ = LinkState::closed;
+      post([this] { dashboard_->channel(false); });
+      std::unique_lock lock{mutex_};
+      wake_.wait_for(lock, retry, [this] { return stopping_; });
+      retry = std::min(retry * 2, longest_retry);
+    }
+  }
+
+  // One connection to the target, until it fails or the monitor stops.
+  Status serve_session() {
+    const std::chrono::milliseconds timeout{options_.timeout_ms};
+    auto channel = MasterChannel::open(options_.target, timeout);
+    if (!channel) return Failure{channel.error()};
+    Master master{std::move(channel).value(), timeout};
+    if (auto connected = master.connect(); !connected) return Failure{connected.error()};
+    ++connects_;
+    {
+      const std::lock_guard lock{mutex_};
+      link_problem_.clear();
+    }
+    for (std::size_t index = 0; index < parameters_.size(); ++index) {
+      auto value = read(master, index);
+      if (!value) return Failure{value.error()};
+      post([this, index, value = value.value()] { report(index, value, "reported"); });
+    }
+    if (!signals_.empty()) {
+      DaqListSetup list{.event = event_->channel, .prescaler = 1};
+      for (const Element& element : signals_)
+        list.entries.push_back(
+            {element.variable->extension, element.address(), static_cast<std::uint8_t>(element.size())});
+      if (Status started = master.start_daq({list}); !started) return started;
+    }
+    link_state_ = LinkState::open;
+    post([this] { describe(); });
+    Status ended = sample(master);
+    (void)master.stop_daq();
+    (void)master.disconnect();
+    return ended;
+  }
+
+  Status sample(Master& master) {
+    const double tick_s = seconds_per_unit(options_.a2l.timestamp_unit) * options_.a2l.timestamp_ticks;
+    std::optional<std::uint32_t> last_timestamp;
+    std::uint64_t ticks = 0;
+    std::vector<double> times;
+    std::vector<std::vector<double>> columns(signals_.size());
+    auto block_started = Clock::now();
+    while (!stopping()) {
+      if (Status written = write_pending(master); !written) return written;
+      auto received = master.receive_samples(signals_.empty() ? std::chrono::milliseconds{50} : daq_wait);
+      if (!received) return Failure{received.error()};
+      for (const DaqSample& sample : received.value()) {
+        // The slave's timestamp wraps at 32 bits: count on across the wrap.
+        ticks =
+            last_timestamp ? ticks + static_cast<std::uint32_t>(sample.timestamp - *last_timestamp) : sample.timestamp;
+        last_timestamp = sample.timestamp;
+        times.push_back(static_cast<double>(ticks) * tick_s);
+        std::size_t at = 0;
+        for (std::size_t signal = 0; signal < signals_.size(); ++signal) {
+          const Element& element = signals_[signal];
+          const std::span<const std::uint8_t> bytes = std::span{sample.bytes}.subspan(at, element.size());
+          Variable scalar = *element.variable;
+          scalar.count = 1;
+          columns[signal].push_back(at + element.size() <= sample.bytes.size() ? decode(scalar, bytes).front() : 0.0);
+          at += element.size();
+        }
+      }
+      samples_ += received.value().size();
+      packets_lost_ = master.channel().counter_gaps();
+      overloads_ = master.overload_events();
+      if (!times.empty() && Clock::now() - block_started >= block_period) {
+        post([this, times = std::move(times), columns = std::move(columns)] { dashboard_->samples(times, columns); });
+        times = {};
+        columns = std::vector<std::vector<double>>(signals_.size());
+        block_started = Clock::now();
+      } else if (times.empty()) {
+        block_started = Clock::now();
+      }
+    }
+    return done();
+  }
+
+  Status write_pending(Master& master) {
+    for (;;) {
+      Write write;
+      {
+        const std::lock_guard lock{mutex_};
+        if (writes_.empty()) return done();
+        write = std::move(writes_.front());
+        writes_.pop_front();
+      }
+      const Element& element = parameters_[write.parameter];
+      if (Status written = master.download(element.variable->extension, element.address(), write.bytes); !written) {
+        ++writes_failed_;
+        post([this, index = write.parameter, problem = written.error()] {
+          report(index, std::nullopt, "failed", problem);
+        });
+        if (written.error().find("ERR_") == std::string::npos) return written;  // no answer: the link is gone
+        continue;
+      }
+      auto value = read(master, write.parameter);
+      if (!value) return Failure{value.error()};
+      ++writes_done_;
+      post([this, index = write.parameter, value = value.value()] { report(index, value, "applied"); });
+    }
+  }
+
+  Result<double> read(Master& master, std::size_t parameter) {
+    const Element& element = parameters_[parameter];
+    auto bytes =
+        master.upload(element.variable->extension, element.address(), static_cast<std::uint32_t>(element.size()));
+    if (!bytes) return Failure{bytes.error()};
+    Variable scalar = *element.variable;
+    scalar.count = 1;
+    return decode(scalar, bytes.value()).front();
+  }
+
+  // On the io thread.
+  void report(std::size_t index, std::optional<double> value, std::string_view status,
+              const std::string& problem = {}) {
+    if (value) parameter_values_[index] = value;
+    dashboard_->parameter(index, value, status, problem);
+  }
+
+  template <typename Work>
+  void post(Work work) {
+    boost::asio::post(io_, std::move(work));
+  }
+
+  bool stopping() {
+    const std::lock_guard lock{mutex_};
+    return stopping_;
+  }
+
+  boost::asio::io_context& io_;
+  MonitorOptions options_;
+  std::vector<Element> signals_;
+  std::vector<Element> parameters_;
+  std::optional<EventInfo> event_;
+  std::optional<dashboard::Dashboard> dashboard_;
+  std::vector<std::optional<double>> parameter_values_;  // on the io thread
+  std::thread worker_;
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stopping_ = false;
+  std::deque<Write> writes_;
+  std::string link_problem_;
+
+  std::atomic<LinkState> link_state_{LinkState::connecting};
+  std::atomic<std::uint64_t> connects_{0}, samples_{0}, packets_lost_{0}, overloads_{0}, writes_done_{0},
+      writes_failed_{0};
+};
+
+Result<std::unique_ptr<MonitorTarget>> MonitorTarget::create(boost::asio::io_context& io, MonitorOptions options) {
+  auto impl = std::make_unique<Impl>(io, std::move(options));
+  if (Status chosen = impl->choose(); !chosen) return Failure{chosen.error()};
+  return std::unique_ptr<MonitorTarget>{new MonitorTarget{std::move(impl)}};
+}
+
+MonitorTarget::MonitorTarget(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+MonitorTarget::~MonitorTarget() { impl_->stop(); }
+Status MonitorTarget::start() { return impl_->start(); }
+void MonitorTarget::stop() { impl_->stop(); }
+std::uint16_t MonitorTarget::port() const { return impl_->port(); }
+
+}  // namespace duet::cli

@@ -1,0 +1,87 @@
+#pragma once
+// What both back ends of the dashboard share (docs/DASHBOARD.md): the server, the description and every
+// parameter's last value that a client gets when it connects, samples to every client and to the recorder, the
+// recorder's requests, status every second. A back end (the bridge's application channel, duet monitor's XCP
+// master) tells it what the target said and answers `set`, `describe` and what its status is.
+// Every member runs on the io_context's thread, except the counters.
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "duet/dashboard/recorder.hpp"
+#include "duet/dashboard/server.hpp"
+
+namespace duet::dashboard {
+
+struct Item {
+  std::string name;
+  std::string unit;
+  std::string type;  // float32, uint16, ...
+  double minimum = 0;
+  double maximum = 0;
+};
+
+struct Description {
+  std::string application;
+  std::string backend;  // bridge, monitor
+  std::uint32_t telemetry_period_us = 0;
+  std::vector<Item> telemetry;
+  std::vector<Item> parameters;
+};
+
+struct Backend {
+  // Writes a parameter; the answer comes back through Dashboard::parameter (or client.error).
+  std::function<void(Client& client, const std::string& name, double value)> set;
+  std::function<void(Client& client)> describe;
+  // The back end's part of the status message: `link`, `executive`, counters.
+  std::function<nlohmann::json()> status;
+};
+
+class Dashboard {
+ public:
+  Dashboard(boost::asio::io_context& io, ServerOptions options, Backend backend);
+  ~Dashboard();
+  Dashboard(const Dashboard&) = delete;
+  Dashboard& operator=(const Dashboard&) = delete;
+
+  Status start();  // listens, and sends status every second
+  void close();
+  [[nodiscard]] std::uint16_t port() const { return server_.port(); }
+
+  void describe(Description description);
+  void parameter(std::size_t index, std::optional<double> value, std::string_view status,
+                 const std::string& problem = {});
+  void telemetry(std::uint32_t sample, std::span<const double> values);
+  // A block: `values` has one column per telemetry signal, each as long as `time_s`.
+  void samples(std::span<const double> time_s, const std::vector<std::vector<double>>& values);
+  void channel(bool open);
+
+  [[nodiscard]] std::uint64_t clients() const { return server_.clients(); }
+  [[nodiscard]] std::uint64_t dropped_for_clients() const { return server_.dropped(); }
+  [[nodiscard]] bool has_clients() const { return server_.has_clients(); }
+
+ private:
+  void welcome(Client& client);
+  void handle(Client& client, const nlohmann::json& request);
+  void record(Client& client, const nlohmann::json& request);
+  void feed_recorder(double time_s, std::span<const double> values);
+  void tick_status();
+  [[nodiscard]] nlohmann::json status() const;
+
+  Backend backend_;
+  Server server_;
+  struct Timer;
+  std::unique_ptr<Timer> status_timer_;
+  std::optional<Description> description_;
+  Message description_message_;
+  std::vector<std::optional<double>> parameter_values_;
+  Recorder recorder_;
+};
+
+}  // namespace duet::dashboard
