@@ -18,6 +18,7 @@
 namespace duet::bridge {
 namespace {
 
+using dashboard::testing::WebSocketClient;
 using nlohmann::json;
 
 class AppServiceTest : public ::testing::Test {

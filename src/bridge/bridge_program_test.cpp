@@ -31,6 +31,7 @@ namespace duet::bridge {
 namespace {
 
 using namespace duet::xcp::host;
+using duet::dashboard::testing::WebSocketClient;
 
 // A child process with its standard input, output and error in pipes.
 class Child {

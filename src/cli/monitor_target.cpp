@@ -240,6 +240,9 @@ class MonitorTarget::Impl {
     const double tick_s = seconds_per_unit(options_.a2l.timestamp_unit) * options_.a2l.timestamp_ticks;
     std::optional<std::uint32_t> last_timestamp;
     std::uint64_t ticks = 0;
+    bool timestamped = false;
+    std::uint64_t count = 0;
+    const double event_s = event_ ? period_s(*event_) : 0.0;
     std::vector<double> times;
     std::vector<std::vector<double>> columns(signals_.size());
     auto block_started = Clock::now();
@@ -248,11 +251,14 @@ class MonitorTarget::Impl {
       auto received = master.receive_samples(signals_.empty() ? std::chrono::milliseconds{50} : daq_wait);
       if (!received) return Failure{received.error()};
       for (const DaqSample& sample : received.value()) {
-        // The slave's timestamp wraps at 32 bits: count on across the wrap.
+        // The slave's timestamp wraps at 32 bits: count on across the wrap. A slave without timestamps (all 0)
+        // gets the event's period per sample.
         ticks =
             last_timestamp ? ticks + static_cast<std::uint32_t>(sample.timestamp - *last_timestamp) : sample.timestamp;
         last_timestamp = sample.timestamp;
-        times.push_back(static_cast<double>(ticks) * tick_s);
+        timestamped = timestamped || sample.timestamp != 0;
+        times.push_back(timestamped ? static_cast<double>(ticks) * tick_s : static_cast<double>(count) * event_s);
+        ++count;
         std::size_t at = 0;
         for (std::size_t signal = 0; signal < signals_.size(); ++signal) {
           const Element& element = signals_[signal];

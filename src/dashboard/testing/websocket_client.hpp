@@ -1,5 +1,5 @@
 #pragma once
-// For tests: a WebSocket client of the bridge's application channel, as far as the tests need a dashboard.
+// For tests: a WebSocket client of a dashboard back end (duet-bridge, duet monitor), as far as the tests need one.
 
 #include <boost/asio.hpp>
 #include <boost/beast/core.hpp>
@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-namespace duet::bridge {
+namespace duet::dashboard::testing {
 
 // Synchronous; every read is bounded by a receive timeout.
 class WebSocketClient {
@@ -52,4 +52,4 @@ class WebSocketClient {
   boost::beast::websocket::stream<boost::asio::ip::tcp::socket> socket_{io_};
 };
 
-}  // namespace duet::bridge
+}  // namespace duet::dashboard::testing
