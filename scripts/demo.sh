@@ -2,7 +2,8 @@
 # The main demonstration: installs what is missing, builds what it needs, and runs the self-balancing robot's
 # firmware on an emulated Cortex-M4 (QEMU mps2-an386) against the simulated robot, in real time, with the Linux-side
 # bridge relaying XCP and the application channel (duet pil, docs/LINK.md "Processor in the loop"). It prints how to
-# connect an XCP master (duet xcp, CANape, pyXCP with the generated A2L) while it runs, and a summary at the end.
+# connect an XCP master (duet xcp, CANape, pyXCP with the generated A2L) and the address of the dashboard (open it in
+# a browser: tuning, scope, recorder, status; docs/DASHBOARD.md) while it runs, and a summary at the end.
 #
 # Usage: scripts/demo.sh [duet pil options]     e.g. --duration 30, --lock-step, --scenario FILE
 # Without --duration it runs until Ctrl-C. scripts/tour.sh shows the parts one by one.
@@ -27,6 +28,7 @@ build() {
 
 build host-release duet duet-bridge
 build m4-qemu balbot-pil
+(cd web && npm run --silent build) && echo "demo: built the dashboard (web/dist)"
 
 scenario=apps/balbot/scenarios/disturbed.yaml
 for argument in "$@"; do

@@ -25,7 +25,12 @@ packages=(
   graphviz
   # fuzzing (libFuzzer comes with clang's runtime libraries)
   clang libclang-rt-14-dev
+  # the dashboard's browser tests drive Debian's Chromium (web/, docs/DASHBOARD.md)
+  chromium
 )
+# The dashboard's front end is built with Node.js and npm: Debian's, unless a Node.js (which brings its own npm) is
+# there already.
+command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
 
 missing=()
 for package in "${packages[@]}"; do
@@ -33,8 +38,17 @@ for package in "${packages[@]}"; do
   [[ $status == "install ok installed" ]] || missing+=("$package")
 done
 
+# The front end's npm packages (web/package-lock.json), when they are not there or the lock file changed.
+web_packages() {
+  if [[ ! -f web/node_modules/.package-lock.json || web/package-lock.json -nt web/node_modules/.package-lock.json ]]; then
+    echo "setup: installing the dashboard's npm packages (web/)"
+    (cd web && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+}
+
 if ((${#missing[@]} == 0)); then
   echo "setup: all ${#packages[@]} packages are installed"
+  web_packages
   exit 0
 fi
 
@@ -49,3 +63,4 @@ export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -q
 "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 echo "setup: installed ${#missing[@]} packages"
+web_packages

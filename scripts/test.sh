@@ -5,6 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 scripts/setup.sh
+echo "== build: the dashboard's front end (web/)"
+(cd web && npm run --silent build)
 
 presets=(host host-release m4-qemu m4-stm32mp15 a7-linux fuzz)
 mkdir -p build

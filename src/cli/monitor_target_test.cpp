@@ -124,12 +124,18 @@ TEST_F(MonitorTargetTest, TheRecorderTriggersOnTheDaqSamples) {
   const auto armed = client.next("recorder");
   ASSERT_TRUE(armed);
   EXPECT_EQ((*armed)["state"], "armed");
+  const auto triggered = client.next("recorder");
+  ASSERT_TRUE(triggered);
+  EXPECT_EQ((*triggered)["state"], "triggered");
   const auto capture = client.next("capture");
   ASSERT_TRUE(capture);
   const json& counter = (*capture)["values"][0];
   EXPECT_EQ(counter.size(), 31U);  // 10 before, the trigger, 20 after
   EXPECT_EQ(counter[10].get<double>(), level);
   EXPECT_EQ((*capture)["signal"], "counter");
+  const auto idle = client.next("recorder");
+  ASSERT_TRUE(idle);
+  EXPECT_EQ((*idle)["state"], "idle");
 }
 
 TEST_F(MonitorTargetTest, StatusSaysTheLinkIsOpen) {

@@ -186,8 +186,8 @@ TEST(PilCommand, TheBridgeRelaysAndReportsItsCounters) {
   EXPECT_TRUE(contains(outcome.out, "  XCP        tcp://127.0.0.1:")) << outcome.out;
   EXPECT_FALSE(contains(outcome.out, "tcp://127.0.0.1:0 ")) << outcome.out;
   EXPECT_TRUE(contains(outcome.out, " (A2L: apps/balbot/generated/balbot.a2l)")) << outcome.out;
-  EXPECT_TRUE(contains(outcome.out, "  telemetry  ws://127.0.0.1:")) << outcome.out;
-  EXPECT_FALSE(contains(outcome.out, "ws://127.0.0.1:0 ")) << outcome.out;
+  EXPECT_TRUE(contains(outcome.out, "  dashboard  http://127.0.0.1:")) << outcome.out;
+  EXPECT_FALSE(contains(outcome.out, "http://127.0.0.1:0/")) << outcome.out;
   EXPECT_TRUE(contains(outcome.out,
                        "  xcp       0 frames to the slave (0 bytes), 0 to the master (0 bytes), 0 DAQ frames dropped, "
                        "0 masters served\n"))

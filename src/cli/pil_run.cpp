@@ -206,12 +206,16 @@ void print_how_to_connect(const PilOptions& options, const std::filesystem::path
     out << "  XCP        tcp://" << options.xcp;
     if (options.plant.name == "balbot") out << " (A2L: apps/balbot/generated/balbot.a2l)";
     out << ", e.g. duet xcp info --connect tcp://" << options.xcp << '\n';
-    out << "  telemetry  ws://" << options.websocket << " (the application channel, JSON over WebSocket)\n";
+    out << "  dashboard  http://" << options.websocket
+        << "/ (the bridge's: the application channel; its JSON API on the same port, docs/DASHBOARD.md)\n";
+    if (options.plant.name == "balbot") {
+      out << "  monitor    duet monitor --xcp tcp://" << options.xcp
+          << " --a2l apps/balbot/generated/balbot.a2l (the dashboard over XCP)\n";
+    }
   } else {
     out << "  XCP        no bridge (--no-bridge): the firmware's XCP channel is unix:" << (folder / "xcp.sock").string()
         << ", its application channel unix:" << (folder / "app.sock").string() << '\n';
   }
-  out << "  dashboard  issue #10\n";
   out << "  Ctrl-C ends the run";
   if (options.duration_s) out << " (else it ends after " << shortest(*options.duration_s) << " s of model time)";
   out << std::endl;  // before the run's own output

@@ -20,10 +20,9 @@ json item_json(const Item& item) {
   return {{"name", item.name}, {"unit", item.unit}, {"type", item.type}, {"min", item.minimum}, {"max", item.maximum}};
 }
 
-json recorder_json(const Recorder& recorder, const Description& description) {
-  const TriggerSettings& settings = recorder.settings();
-  json message = {{"type", "recorder"}, {"state", name_of(recorder.state())}};
-  if (recorder.state() != Recorder::State::idle && settings.signal < description.telemetry.size()) {
+json recorder_json(Recorder::State state, const TriggerSettings& settings, const Description& description) {
+  json message = {{"type", "recorder"}, {"state", name_of(state)}};
+  if (state != Recorder::State::idle && settings.signal < description.telemetry.size()) {
     message.update({{"signal", description.telemetry[settings.signal].name},
                     {"level", settings.level},
                     {"edge", name_of(settings.edge)},
@@ -72,7 +71,8 @@ void Dashboard::describe(Description description) {
   parameter_values_.assign(description.parameters.size(), std::nullopt);
   if (recorder_.state() != Recorder::State::idle) {
     recorder_.cancel();  // its signal index may mean another signal now
-    server_.broadcast(dashboard::message(recorder_json(recorder_, description)), Delivery::always);
+    server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), description)),
+                      Delivery::always);
   }
   description_ = std::move(description);
   server_.broadcast(description_message_, Delivery::always);
@@ -117,8 +117,15 @@ void Dashboard::channel(bool open) {
 }
 
 void Dashboard::feed_recorder(double time_s, std::span<const double> values) {
+  const Recorder::State before = recorder_.state();
   auto capture = recorder_.take(time_s, values);
-  if (!capture || !description_) return;
+  if (!description_) return;
+  if (before == Recorder::State::armed && recorder_.state() != Recorder::State::armed) {  // triggered just now
+    server_.broadcast(
+        dashboard::message(recorder_json(Recorder::State::triggered, recorder_.settings(), *description_)),
+        Delivery::always);
+  }
+  if (!capture) return;
   const Item& signal = description_->telemetry[capture->settings.signal];
   server_.broadcast(dashboard::message({{"type", "capture"},
                                         {"signal", signal.name},
@@ -128,7 +135,8 @@ void Dashboard::feed_recorder(double time_s, std::span<const double> values) {
                                         {"time_s", capture->time_s},
                                         {"values", capture->values}}),
                     Delivery::always);
-  server_.broadcast(dashboard::message(recorder_json(recorder_, *description_)), Delivery::always);
+  server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
+                    Delivery::always);
 }
 
 void Dashboard::welcome(Client& client) {
@@ -144,7 +152,8 @@ void Dashboard::welcome(Client& client) {
                 Delivery::always);
   }
   if (recorder_.state() != Recorder::State::idle)
-    client.send(dashboard::message(recorder_json(recorder_, *description_)), Delivery::always);
+    client.send(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
+                Delivery::always);
 }
 
 void Dashboard::handle(Client& client, const json& request) {
@@ -161,7 +170,9 @@ void Dashboard::handle(Client& client, const json& request) {
   if (type == "record") return record(client, request);
   if (type == "cancel_record") {
     recorder_.cancel();
-    if (description_) server_.broadcast(dashboard::message(recorder_json(recorder_, *description_)), Delivery::always);
+    if (description_)
+      server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
+                        Delivery::always);
     return;
   }
   client.error("unknown request type '" + type + "': set, describe, status, record or cancel_record");
@@ -192,7 +203,8 @@ void Dashboard::record(Client& client, const json& request) {
                                  .post_s = *post_s};
   const double period_s = std::max(description_->telemetry_period_us, 1U) * 1e-6;
   if (Status armed = recorder_.arm(settings, telemetry.size(), period_s); !armed) return client.error(armed.error());
-  server_.broadcast(dashboard::message(recorder_json(recorder_, *description_)), Delivery::always);
+  server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
+                    Delivery::always);
 }
 
 json Dashboard::status() const {

@@ -1,0 +1,17 @@
+// Offers `text` as a file download, without a server round trip.
+export function downloadText(filename, text, type = 'text/plain') {
+  const url = URL.createObjectURL(new Blob([text], { type }));
+  const link = document.createElement('a');
+  link.href = url;
+  link.download = filename;
+  document.body.append(link);
+  link.click();
+  link.remove();
+  // The browser has the blob once the click is handled; give it a moment before freeing it.
+  setTimeout(() => URL.revokeObjectURL(url), 10000);
+}
+
+// 2024-05-01T12-30-05: sortable and valid in every file system.
+export function timestampForFile(date = new Date()) {
+  return date.toISOString().slice(0, 19).replaceAll(':', '-');
+}

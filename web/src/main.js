@@ -1,0 +1,39 @@
+// duet's dashboard: one WebSocket, four pages. This file only wires the parts together.
+import { Connection } from './connection.js';
+import { EventHub } from './event_hub.js';
+import { websocketUrl } from './websocket_url.js';
+import { installTestHooks, recordMessage } from './test_hooks.js';
+import { connectSignalFeed } from './signal_feed.js';
+import { createLinkIndicator } from './link_indicator.js';
+import { createTuningPage } from './tuning_page.js';
+import { createScopePage } from './scope_page.js';
+import { createRecorderPage } from './recorder_page.js';
+import { createStatusPage } from './status_page.js';
+import { setUpTabs } from './tabs.js';
+
+const hub = new EventHub();
+const indicator = createLinkIndicator(document.getElementById('link-indicator'));
+const connection = new Connection(websocketUrl(location), {
+  onMessage(message, arrivalMs) {
+    recordMessage(duet, message, arrivalMs);
+    hub.emit(message.type, message);
+  },
+  onState(state) {
+    indicator.socket(state);
+    hub.emit('link', state);
+  },
+});
+const duet = installTestHooks(connection);
+
+connectSignalFeed(hub, duet.stats);
+hub.on('channel', (channel) => indicator.channel(channel.open !== false));
+hub.on('description', () => indicator.channel(true));
+
+const pages = {
+  tuning: createTuningPage({ hub, connection }),
+  scope: createScopePage({ hub, stats: duet.stats }),
+  recorder: createRecorderPage({ hub, connection }),
+  status: createStatusPage({ hub, connection }),
+};
+setUpTabs(pages, 'tuning');
+connection.open();

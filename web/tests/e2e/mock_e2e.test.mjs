@@ -1,0 +1,27 @@
+// The browser end-to-end test against the mock back end, in both of its shapes: `duet monitor`
+// (samples blocks at 1 kHz) and `duet-bridge` (one telemetry message per sample). Needs dist/
+// (npm run build) and Chromium; run with `npm run e2e:mock`.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { mkdtemp, rm } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { runScript, startMock } from './start_mock.mjs';
+
+for (const mode of ['samples', 'telemetry']) {
+  test(`dashboard end to end against the mock in ${mode} mode`, { timeout: 90000 }, async () => {
+    const mock = await startMock(['--mode', mode]);
+    const artefacts = await mkdtemp(path.join(tmpdir(), `duet-e2e-${mode}-`));
+    try {
+      const run = await runScript('dashboard_e2e.mjs', ['--url', mock.url, '--artefacts', artefacts, '--parameter', 'P', '--value', '0.05', '--signal', 'theta', '--trigger-level', '0', '--timeout-s', '30']);
+      assert.equal(run.code, 0, `dashboard_e2e failed:\n${run.stdout}${run.stderr}`);
+      const results = JSON.parse(run.stdout.trim().split('\n').pop());
+      assert.equal(results.ok, true);
+      assert.ok(Math.abs(results.parameter_written.target - 0.05) < 1e-6);
+      assert.ok(results.samples > 0 && results.frames > 0 && results.captured > 0);
+    } finally {
+      mock.stop();
+      await rm(artefacts, { recursive: true, force: true });
+    }
+  });
+}
