@@ -114,6 +114,28 @@ bool Endpoint::publish(std::uint32_t sample) {
   return queued;
 }
 
+bool Endpoint::publish_executive(const ExecutiveReport& report) {
+  constexpr std::size_t executive_size = 1 + 6 * 4 + 1;
+  bool queued = queue_.push(executive_size + xcp::TransmitQueue::record_header, 2 * answer_record, [&](auto& out) {
+    out.packet(executive_size).u8(static_cast<std::uint8_t>(Message::executive));
+    out.u32(static_cast<std::uint32_t>(report.ticks)).u32(static_cast<std::uint32_t>(report.ticks >> 32U));
+    out.u32(report.base_period_ns).u32(report.busy_ppm).u32(report.overruns).u32(report.cycle_hz);
+    out.u8(static_cast<std::uint8_t>(report.tasks.size()));
+  });
+  for (std::size_t index = 0; index < report.tasks.size() && queued; ++index) {
+    const TaskReport& task = report.tasks[index];
+    const std::size_t name_length = task.name.size() < max_name_length ? task.name.size() : max_name_length;
+    const std::size_t size = 1 + 1 + 5 * 4 + 1 + name_length;
+    queued = queue_.push(size + xcp::TransmitQueue::record_header, 2 * answer_record, [&](auto& out) {
+      out.packet(size).u8(static_cast<std::uint8_t>(Message::task)).u8(static_cast<std::uint8_t>(index));
+      out.u32(task.activations).u32(task.overruns).u32(task.min_cycles).u32(task.mean_cycles).u32(task.max_cycles);
+      out.u8(static_cast<std::uint8_t>(name_length));
+      out.bytes(reinterpret_cast<const std::uint8_t*>(task.name.data()), name_length);
+    });
+  }
+  return queued;
+}
+
 void Endpoint::receive(std::span<const std::uint8_t> bytes) {
   decoder_.feed(bytes, [this](std::uint16_t, std::span<const std::uint8_t> command) { handle(command); });
 }

@@ -8,6 +8,7 @@
 #include <atomic>
 #include <chrono>
 #include <iostream>
+#include <mutex>
 #include <optional>
 #include <sstream>
 
@@ -44,6 +45,7 @@ class AppService::Impl {
         peer_({.description = [this](const Description& description) { on_description(description); },
                .telemetry = [this](const Sample& sample) { on_sample(sample); },
                .parameter = [this](const ParameterReport& report) { on_parameter(report); },
+               .executive = [this](const app_channel::host::ExecutiveReport& report) { on_executive(report); },
                .problem = [this](const std::string& problem) { log("application channel: " + problem); }}) {
     if (options_.websocket) {
       dashboard_.emplace(io_,
@@ -86,6 +88,10 @@ class AppService::Impl {
                      {"malformed_packets", malformed_.load()},
                      {"clients", dashboard_ ? dashboard_->clients() : 0},
                      {"samples_dropped_for_clients", dashboard_ ? dashboard_->dropped_for_clients() : 0}}}};
+    {
+      const std::lock_guard lock{executive_mutex_};
+      if (!executive_.is_null()) status["executive"] = executive_;
+    }
     if (options_.extra_status) {
       json extra = json::parse(options_.extra_status(), nullptr, false);
       if (extra.is_object()) status.update(extra);
@@ -133,6 +139,10 @@ class AppService::Impl {
     writing_channel_ = false;
     to_channel_.clear();
     log("application channel " + options_.channel_uri + " closed (" + reason + "); retrying");
+    {
+      const std::lock_guard lock{executive_mutex_};
+      executive_ = nullptr;
+    }
     if (dashboard_) dashboard_->channel(false);
     retry_in(retry_delay_);
   }
@@ -228,6 +238,26 @@ class AppService::Impl {
     }
   }
 
+  // The dashboard's Status page shows the last account; cycle counts become microseconds.
+  void on_executive(const app_channel::host::ExecutiveReport& report) {
+    const double us_per_cycle = report.cycle_hz == 0 ? 0.0 : 1e6 / report.cycle_hz;
+    json executive = {{"time_s", static_cast<double>(report.ticks) * report.base_period_ns * 1e-9},
+                      {"ticks", report.ticks},
+                      {"core_load", report.busy_ppm * 1e-6},
+                      {"overruns", report.overruns},
+                      {"tasks", json::array()}};
+    for (const auto& task : report.tasks) {
+      executive["tasks"].push_back({{"name", task.name},
+                                    {"activations", task.activations},
+                                    {"overruns", task.overruns},
+                                    {"min_us", task.min_cycles * us_per_cycle},
+                                    {"mean_us", task.mean_cycles * us_per_cycle},
+                                    {"max_us", task.max_cycles * us_per_cycle}});
+    }
+    const std::lock_guard lock{executive_mutex_};
+    executive_ = std::move(executive);
+  }
+
   // `name=value` lines on standard input set parameters (CSV mode, for scripts).
   void read_input() {
     error_code error;
@@ -273,6 +303,9 @@ class AppService::Impl {
   Peer peer_;
   std::optional<dashboard::Dashboard> dashboard_;
   std::string csv_header_;
+
+  mutable std::mutex executive_mutex_;
+  json executive_;  // the last account, for status (read from other threads too)
 
   std::atomic<bool> channel_open_{false};
   std::atomic<std::uint64_t> channel_opens_{0}, samples_{0}, frames_lost_{0}, garbage_bytes_{0}, malformed_{0};

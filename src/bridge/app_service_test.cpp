@@ -9,6 +9,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -43,6 +44,25 @@ class AppServiceTest : public ::testing::Test {
   std::unique_ptr<AppService> service;
   std::thread thread;
 };
+
+TEST_F(AppServiceTest, StatusCarriesTheExecutivesAccount) {
+  WebSocketClient client{service->websocket_port()};
+  std::optional<json> status;
+  for (int attempt = 0; attempt < 30 && !(status && status->contains("executive")); ++attempt) {
+    std::this_thread::sleep_for(std::chrono::milliseconds{100});
+    client.send({{"type", "status"}});
+    status = client.next("status");
+  }
+  ASSERT_TRUE(status && status->contains("executive")) << (status ? status->dump() : "no status");
+  const json& executive = (*status)["executive"];
+  EXPECT_DOUBLE_EQ(executive["core_load"].get<double>(), 0.012);
+  EXPECT_EQ(executive["overruns"], 1);
+  EXPECT_DOUBLE_EQ(executive["time_s"].get<double>(), executive["ticks"].get<double>() * 0.01);
+  ASSERT_EQ(executive["tasks"].size(), 2U);
+  EXPECT_EQ(executive["tasks"][1]["name"], "IPCC_RX1");
+  EXPECT_DOUBLE_EQ(executive["tasks"][0]["max_us"].get<double>(), 10.0);  // 250 cycles at 25 MHz
+  EXPECT_EQ((*status)["link"]["state"], "open");
+}
 
 TEST_F(AppServiceTest, ADashboardGetsTheDescriptionTelemetryAndSetsTheGains) {
   WebSocketClient client{service->websocket_port()};

@@ -1,6 +1,7 @@
 #pragma once
 // For tests: the robot's application channel on the PC, behind a pseudo-terminal: an app_channel::Endpoint that
-// publishes theta, battery voltage and distance at 100 Hz and takes the controller gains P, I, D, as the firmware on
+// publishes theta, battery voltage and distance at 100 Hz (and the executive's account every second) and takes the
+// controller gains P, I, D, as the firmware on
 // the real-time core does over /dev/ttyRPMSG1. One thread does the I/O.
 
 #include <poll.h>
@@ -68,6 +69,7 @@ class PtyApplication {
         battery_ = 7.4F;
         distance_ = static_cast<std::uint16_t>(20 + sample % 50);
         (void)endpoint_.publish(sample);
+        if (sample % 100 == 99) publish_account(sample + 1);  // once a second, as the firmware does
         next_sample += std::chrono::milliseconds{10};
       }
       if (unsent.size() < 4096) {
@@ -79,6 +81,18 @@ class PtyApplication {
         if (written > 0) unsent.erase(unsent.begin(), unsent.begin() + written);
       }
     }
+  }
+
+  // The executive's account of a two-task model at 10 ms per tick, cycles counted at 25 MHz.
+  void publish_account(std::uint32_t ticks) {
+    const std::array<app_channel::TaskReport, 2> tasks{app_channel::TaskReport{"rate 1", ticks, 0, 150, 180, 250},
+                                                       app_channel::TaskReport{"IPCC_RX1", 3, 1, 300, 310, 320}};
+    (void)endpoint_.publish_executive({.ticks = ticks,
+                                       .base_period_ns = 10'000'000,
+                                       .busy_ppm = 12'000,
+                                       .overruns = 1,
+                                       .cycle_hz = 25'000'000,
+                                       .tasks = tasks});
   }
 
   PseudoTerminal pty_;

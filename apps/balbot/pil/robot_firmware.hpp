@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <span>
 
+#include "duet/app_channel/endpoint.hpp"
 #include "duet/mps2_an386/plant_link.hpp"
 
 namespace balbot::pil {
@@ -23,6 +24,9 @@ void on_task_finished(std::size_t task);
 void send_to_linux(std::span<const double> message_bytes);
 // The message Linux sent last (IpcReceive: P, I, D as little-endian floats), as the model reads it.
 void receive_from_linux(std::span<double> message_bytes);
+
+// The executive's account for the dashboard's Status page, on the application channel (from the background loop).
+void publish_executive(const duet::app_channel::ExecutiveReport& report);
 
 struct HostChannelCounters {
   std::uint32_t xcp_bytes_received;

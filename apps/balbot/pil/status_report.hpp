@@ -10,11 +10,15 @@
 // A task line per task follows every status line, then the channels' line. Cycles count the board's 25 MHz timer
 // (40 ns), which the plant link holds while it talks to the plant: net execution times, without preemption.
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 
+#include "duet/app_channel/endpoint.hpp"
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
+#include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/executive_report.hpp"
 #include "duet/mps2_an386/plant_link.hpp"
 #include "duet/rt/executive.hpp"
@@ -57,6 +61,7 @@ class StatusReport {
   template <typename Executive>
   void status(const Executive& executive) {
     duet::mps2_an386::write_executive_report(executive, model_);
+    publish_account(executive);
     const HostChannelCounters counters = host_channel_counters();
     line_.clear();
     line_.append("duet-channels xcp_received=").append(counters.xcp_bytes_received);
@@ -65,6 +70,24 @@ class StatusReport {
     line_.append(" application_sent=").append(counters.application_bytes_sent);
     line_.append(" telemetry_dropped=").append(counters.telemetry_dropped);
     emit();
+  }
+
+  // The same account for the dashboard's Status page, on the application channel.
+  template <typename Executive>
+  void publish_account(const Executive& executive) {
+    const std::size_t count = model_.tasks.size() < tasks_.size() ? model_.tasks.size() : tasks_.size();
+    for (std::size_t task = 0; task < count; ++task) {
+      const duet::rt::TaskStatistics& statistics = executive.statistics(task);
+      tasks_[task] = {model_.tasks[task].name,  statistics.activations,
+                      statistics.overruns,      statistics.activations == 0 ? 0U : statistics.min_cycles,
+                      statistics.mean_cycles(), statistics.max_cycles};
+    }
+    publish_executive({.ticks = executive.ticks(),
+                       .base_period_ns = model_.base_period_ns,
+                       .busy_ppm = executive.load().busy_ppm(),
+                       .overruns = static_cast<std::uint32_t>(duet::mps2_an386::total_overruns(executive, model_)),
+                       .cycle_hz = duet::mps2_an386::core_clock_hz,
+                       .tasks = std::span{tasks_}.first(count)});
   }
 
   static std::string_view reason(duet::rt::StopReason reason) {
@@ -85,6 +108,7 @@ class StatusReport {
 
   const duet::rt::ModelDescription& model_;
   duet::TextBuffer<240> line_;
+  std::array<duet::app_channel::TaskReport, 16> tasks_{};
   std::uint64_t ticks_per_report_ = 1000;
   std::uint64_t next_report_ = 1000;
 };

@@ -29,8 +29,11 @@ struct Robot {
 
 class AppChannel : public ::testing::Test {
  protected:
-  void exchange() {                       // firmware -> PC until nothing is left
-    std::array<std::uint8_t, 64> line{};  // a small line: frames are cut into pieces
+  // Firmware -> PC until nothing is left, through a line that takes `line_size` bytes at a time (the framer sends
+  // whole frames only: the largest, an item or a task with a 63-byte name, needs 92).
+  template <std::size_t line_size = 64>
+  void exchange() {
+    std::array<std::uint8_t, line_size> line{};
     while (const std::size_t sent = endpoint.transmit(line)) peer.receive(std::span{line}.first(sent));
   }
   void request(const std::vector<std::uint8_t>& frame) {
@@ -54,10 +57,12 @@ class AppChannel : public ::testing::Test {
   std::vector<Description> descriptions;
   std::vector<Sample> samples;
   std::vector<ParameterReport> reports;
+  std::vector<host::ExecutiveReport> executives;
   std::vector<std::string> problems;
   Peer peer{{.description = [this](const Description& d) { descriptions.push_back(d); },
              .telemetry = [this](const Sample& s) { samples.push_back(s); },
              .parameter = [this](const ParameterReport& r) { reports.push_back(r); },
+             .executive = [this](const host::ExecutiveReport& e) { executives.push_back(e); },
              .problem = [this](const std::string& p) { problems.push_back(p); }}};
 };
 
@@ -80,6 +85,51 @@ TEST_F(AppChannel, TheFirmwareDescribesItselfAtStart) {
   EXPECT_FLOAT_EQ(static_cast<float>(*peer.parameter_values()[0]), 0.0196F);
   EXPECT_DOUBLE_EQ(*peer.parameter_values()[2], 0.0187);
   EXPECT_TRUE(problems.empty());
+}
+
+TEST_F(AppChannel, TheExecutivesAccountArrivesWhole) {
+  exchange();
+  const std::array<TaskReport, 2> tasks{
+      TaskReport{"rate 1", 1000, 0, 180, 186, 240},
+      TaskReport{"a task whose name is longer than sixty-three characters, cut short", 100, 2, 500, 520, 900}};
+  ASSERT_TRUE(endpoint.publish_executive({.ticks = 0x1'0000'0005ULL,
+                                          .base_period_ns = 1'000'000,
+                                          .busy_ppm = 52'000,
+                                          .overruns = 2,
+                                          .cycle_hz = 25'000'000,
+                                          .tasks = tasks}));
+  exchange<128>();
+  ASSERT_EQ(executives.size(), 1U);
+  const host::ExecutiveReport& report = executives[0];
+  EXPECT_EQ(report.ticks, 0x1'0000'0005ULL);
+  EXPECT_EQ(report.busy_ppm, 52'000U);
+  EXPECT_EQ(report.cycle_hz, 25'000'000U);
+  ASSERT_EQ(report.tasks.size(), 2U);
+  EXPECT_EQ(report.tasks[0].name, "rate 1");
+  EXPECT_EQ(report.tasks[0].mean_cycles, 186U);
+  EXPECT_EQ(report.tasks[1].name.size(), max_name_length);
+  EXPECT_EQ(report.tasks[1].overruns, 2U);
+  EXPECT_TRUE(problems.empty());
+}
+
+TEST_F(AppChannel, AnAccountWithATaskLostIsNotHandedOn) {
+  exchange();
+  const std::array<TaskReport, 2> tasks{TaskReport{"rate 1", 1, 0, 1, 1, 1}, TaskReport{"rate 10", 1, 0, 1, 1, 1}};
+  ASSERT_TRUE(endpoint.publish_executive({.ticks = 1, .cycle_hz = 1, .tasks = tasks}));
+  // The line loses the frame of the first task: the executive packet's frame is 4 + 26 + 2 bytes, the task's next
+  // 4 + 29 + 1 (fill) + 2.
+  std::array<std::uint8_t, 512> line{};
+  std::size_t sent = 0;
+  while (const std::size_t more = endpoint.transmit(std::span{line}.subspan(sent))) sent += more;
+  const std::size_t executive_frame = 4 + 26 + 2;
+  const std::size_t task_frame = 4 + 29 + 1 + 2;
+  peer.receive(std::span{line}.first(executive_frame));
+  peer.receive(std::span{line}.subspan(executive_frame + task_frame, sent - executive_frame - task_frame));
+  EXPECT_TRUE(executives.empty());
+  ASSERT_TRUE(endpoint.publish_executive({.ticks = 2, .cycle_hz = 1, .tasks = tasks}));
+  exchange();
+  ASSERT_EQ(executives.size(), 1U);
+  EXPECT_EQ(executives[0].ticks, 2U);
 }
 
 TEST_F(AppChannel, TelemetryArrivesAsNamedValues) {

@@ -210,8 +210,46 @@ void Peer::handle(std::span<const std::uint8_t> packet) {
       if (handlers_.parameter) handlers_.parameter(report);
       return;
     }
+    case Message::executive: {
+      ExecutiveReport report;
+      report.ticks = in.u32();
+      report.ticks |= static_cast<std::uint64_t>(in.u32()) << 32U;
+      report.base_period_ns = in.u32();
+      report.busy_ppm = in.u32();
+      report.overruns = in.u32();
+      report.cycle_hz = in.u32();
+      report.tasks.resize(in.u8());
+      if (!in.complete()) return problem("an executive report is malformed");
+      executive_tasks_ = 0;
+      executive_ = std::move(report);
+      return finish_executive();
+    }
+    case Message::task: {
+      TaskTiming task;
+      const std::size_t index = in.u8();
+      task.activations = in.u32();
+      task.overruns = in.u32();
+      task.min_cycles = in.u32();
+      task.mean_cycles = in.u32();
+      task.max_cycles = in.u32();
+      task.name = in.text();
+      if (!in.complete()) return problem("a task report is malformed");
+      // Tasks come in order after their executive packet; anything else means a lost frame: wait for the next.
+      if (!executive_ || index != executive_tasks_ || index >= executive_->tasks.size()) {
+        executive_.reset();
+        return;
+      }
+      executive_->tasks[executive_tasks_++] = std::move(task);
+      return finish_executive();
+    }
     default: return problem("unknown message " + std::to_string(packet.empty() ? 0 : packet[0]));
   }
+}
+
+void Peer::finish_executive() {
+  if (!executive_ || executive_tasks_ != executive_->tasks.size()) return;
+  if (handlers_.executive) handlers_.executive(*executive_);
+  executive_.reset();
 }
 
 std::vector<std::uint8_t> Peer::describe_request() {

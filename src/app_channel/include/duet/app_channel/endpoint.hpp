@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string_view>
 
 #include "duet/app_channel/protocol.hpp"
 #include "duet/xcp/framing.hpp"
@@ -38,6 +39,25 @@ struct Application {
   std::span<const Item> parameters;
 };
 
+// The executive's account of itself, for the dashboard's Status page.
+struct TaskReport {
+  std::string_view name;
+  std::uint32_t activations;
+  std::uint32_t overruns;
+  std::uint32_t min_cycles;
+  std::uint32_t mean_cycles;
+  std::uint32_t max_cycles;
+};
+
+struct ExecutiveReport {
+  std::uint64_t ticks;
+  std::uint32_t base_period_ns;
+  std::uint32_t busy_ppm;
+  std::uint32_t overruns;
+  std::uint32_t cycle_hz;  // what the tasks' cycle counts count
+  std::span<const TaskReport> tasks;
+};
+
 class Endpoint {
  public:
   // `queue` carries telemetry and answers (its lock also guards parameter writes against the tasks that read them);
@@ -51,6 +71,11 @@ class Endpoint {
 
   // Queues one telemetry sample; false, and counted, if the queue is full (answers keep their room).
   bool publish(std::uint32_t sample);
+
+  // Queues the executive's account: a packet, then one per task. Like publish(), it leaves room for answers; false
+  // if any packet did not fit (the other side then waits for the next whole account). Not from an interrupt: once
+  // a second from the background loop is plenty.
+  bool publish_executive(const ExecutiveReport& report);
 
   // Bytes from the line, in any pieces.
   void receive(std::span<const std::uint8_t> bytes);

@@ -29,6 +29,10 @@ enum class Message : std::uint8_t {
   described = 0x03,  // (the description is complete)
   telemetry = 0x04,  // sample u32, then every telemetry item's value in order, each as its type
   parameter = 0x05,  // index u8, status u8, the parameter's value now, as its type
+  // The executive's account, then a `task` packet per task: ticks u32 low, u32 high, base period ns u32,
+  // busy ppm u32, overruns u32, the frequency the cycle counts count in Hz u32, task count u8.
+  executive = 0x06,
+  task = 0x07,  // index u8, activations u32, overruns u32, min, mean, max cycles u32, name str
   // To the firmware.
   describe = 0x81,  // (send the description and every parameter's value)
   set = 0x82,       // index u8, value as the parameter's type

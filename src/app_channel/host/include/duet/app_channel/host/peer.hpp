@@ -43,6 +43,25 @@ struct ParameterReport {
   std::optional<double> value;  // none when the index was unknown
 };
 
+struct TaskTiming {
+  std::string name;
+  std::uint32_t activations = 0;
+  std::uint32_t overruns = 0;
+  std::uint32_t min_cycles = 0;
+  std::uint32_t mean_cycles = 0;
+  std::uint32_t max_cycles = 0;
+};
+
+// The executive's account, whole: an `executive` packet and every `task` packet it announced.
+struct ExecutiveReport {
+  std::uint64_t ticks = 0;
+  std::uint32_t base_period_ns = 0;
+  std::uint32_t busy_ppm = 0;
+  std::uint32_t overruns = 0;
+  std::uint32_t cycle_hz = 0;
+  std::vector<TaskTiming> tasks;
+};
+
 struct PeerCounters {
   std::uint64_t samples = 0;
   std::uint64_t frames_lost = 0;  // gaps in the firmware's frame counter
@@ -56,6 +75,7 @@ class Peer {
     std::function<void(const Description&)> description;
     std::function<void(const Sample&)> telemetry;
     std::function<void(const ParameterReport&)> parameter;
+    std::function<void(const ExecutiveReport&)> executive;
     std::function<void(const std::string&)> problem;  // a malformed packet, named
   };
 
@@ -79,13 +99,16 @@ class Peer {
 
  private:
   void handle(std::span<const std::uint8_t> packet);
+  void finish_executive();
   void problem(const std::string& what);
 
   Handlers handlers_;
   std::vector<std::uint8_t> decoder_buffer_;
   xcp::FrameDecoder decoder_;
   std::optional<Description> description_;
-  std::optional<Description> incoming_;  // a description being received
+  std::optional<Description> incoming_;       // a description being received
+  std::optional<ExecutiveReport> executive_;  // an account being received
+  std::size_t executive_tasks_ = 0;           // of it so far
   std::vector<std::optional<double>> parameter_values_;
   std::optional<std::uint16_t> last_counter_;
   std::uint16_t request_counter_ = 0;
