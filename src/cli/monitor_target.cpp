@@ -16,6 +16,7 @@
 #include "duet/dashboard/dashboard.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
+#include "executive_account_layout.hpp"
 
 namespace duet::cli {
 namespace {
@@ -27,6 +28,7 @@ using Clock = std::chrono::steady_clock;
 constexpr auto block_period = std::chrono::milliseconds{20};
 constexpr auto daq_wait = std::chrono::milliseconds{5};
 constexpr auto longest_retry = std::chrono::milliseconds{2000};
+constexpr auto account_period = std::chrono::seconds{1};
 
 // One element of a MEASUREMENT or CHARACTERISTIC: arrays show as NAME[0], NAME[1], ...
 struct Element {
@@ -73,9 +75,12 @@ class MonitorTarget::Impl {
 
   Status choose() {
     const A2lDescription& a2l = options_.a2l;
-    if (options_.signals.empty()) {
-      for (const Variable& variable : a2l.measurements) options_.signals.push_back(variable.name);
+    if (options_.signals.empty()) {  // every signal of the model; the executive's account is the Status page's
+      for (const Variable& variable : a2l.measurements) {
+        if (!ExecutiveAccountLayout::is_account(variable)) options_.signals.push_back(variable.name);
+      }
     }
+    account_ = ExecutiveAccountLayout::from(a2l);
     for (const std::string& name : options_.signals) {
       const auto found = std::find_if(a2l.measurements.begin(), a2l.measurements.end(),
                                       [&](const Variable& variable) { return variable.name == name; });
@@ -88,6 +93,8 @@ class MonitorTarget::Impl {
     }
     parameter_values_.assign(parameters_.size(), std::nullopt);
     for (const EventInfo& info : a2l.events) {
+      if (info.time_cycle != 0 && (base_period_s_ == 0 || period_s(info) < base_period_s_))
+        base_period_s_ = period_s(info);
       if (options_.event.empty() ? info.time_cycle != 0 && (!event_ || period_s(info) < period_s(*event_))
                                  : info.name == options_.event || std::to_string(info.channel) == options_.event)
         event_ = info;
@@ -163,16 +170,19 @@ class MonitorTarget::Impl {
       const std::lock_guard lock{mutex_};
       if (!link_problem_.empty()) link["problem"] = link_problem_;
     }
-    return {{"link", link},
-            {"xcp",
-             {{"event", event_ ? event_->name : ""},
-              {"signals", signals_.size()},
-              {"connects", connects_.load()},
-              {"samples", samples_.load()},
-              {"packets_lost", packets_lost_.load()},
-              {"overloads", overloads_.load()},
-              {"writes", writes_done_.load()},
-              {"writes_failed", writes_failed_.load()}}}};
+    json status = {{"link", link},
+                   {"xcp",
+                    {{"event", event_ ? event_->name : ""},
+                     {"signals", signals_.size()},
+                     {"connects", connects_.load()},
+                     {"samples", samples_.load()},
+                     {"packets_lost", packets_lost_.load()},
+                     {"overloads", overloads_.load()},
+                     {"writes", writes_done_.load()},
+                     {"writes_failed", writes_failed_.load()}}}};
+    const std::lock_guard lock{mutex_};
+    if (!account_json_.is_null()) status["executive"] = account_json_;
+    return status;
   }
 
   enum class LinkState { connecting, open, closed };
@@ -246,8 +256,13 @@ class MonitorTarget::Impl {
     std::vector<double> times;
     std::vector<std::vector<double>> columns(signals_.size());
     auto block_started = Clock::now();
+    auto account_due = Clock::now();
     while (!stopping()) {
       if (Status written = write_pending(master); !written) return written;
+      if (account_ && Clock::now() >= account_due) {
+        if (Status read = read_account(master); !read) return read;
+        account_due += account_period;
+      }
       auto received = master.receive_samples(signals_.empty() ? std::chrono::milliseconds{50} : daq_wait);
       if (!received) return Failure{received.error()};
       for (const DaqSample& sample : received.value()) {
@@ -309,6 +324,22 @@ class MonitorTarget::Impl {
     }
   }
 
+  // The executive's account, for the Status page. A target that refuses it (firmware that keeps none) is asked no
+  // more; no answer means the link is gone.
+  Status read_account(Master& master) {
+    const xcp::host::MemoryInfo& segment = account_->segment();
+    auto bytes = master.upload(segment.extension, segment.address, segment.size);
+    if (!bytes) {
+      if (bytes.error().find("ERR_") == std::string::npos) return Failure{bytes.error()};
+      account_.reset();
+      return done();
+    }
+    json account = account_->decode(bytes.value(), base_period_s_);
+    const std::lock_guard lock{mutex_};
+    account_json_ = std::move(account);
+    return done();
+  }
+
   Result<double> read(Master& master, std::size_t parameter) {
     const Element& element = parameters_[parameter];
     auto bytes =
@@ -341,6 +372,8 @@ class MonitorTarget::Impl {
   std::vector<Element> signals_;
   std::vector<Element> parameters_;
   std::optional<EventInfo> event_;
+  std::optional<ExecutiveAccountLayout> account_;  // read by the worker only, after choose()
+  double base_period_s_ = 0;                       // the fastest periodic event's
   std::optional<dashboard::Dashboard> dashboard_;
   std::vector<std::optional<double>> parameter_values_;  // on the io thread
   std::thread worker_;
@@ -350,6 +383,7 @@ class MonitorTarget::Impl {
   bool stopping_ = false;
   std::deque<Write> writes_;
   std::string link_problem_;
+  json account_json_;  // the last account read
 
   std::atomic<LinkState> link_state_{LinkState::connecting};
   std::atomic<std::uint64_t> connects_{0}, samples_{0}, packets_lost_{0}, overloads_{0}, writes_done_{0},

@@ -287,10 +287,12 @@ class FileWriter {
     std::string text = banner("//", source_);
     text += "// What XCP may reach of the model (duet/xcp/memory_map.hpp), at the A2L's addresses, and its events:\n";
     text += "// one per task, numbered as the task table.\n#pragma once\n\n#include <cstdint>\n\n";
-    text += "#include \"" + name_ + ".hpp\"\n#include \"duet/xcp/daq.hpp\"\n#include \"duet/xcp/memory_map.hpp\"\n\n";
+    text += "#include \"" + name_ + ".hpp\"\n#include \"duet/rt/executive_account.hpp\"\n";
+    text += "#include \"duet/xcp/daq.hpp\"\n#include \"duet/xcp/memory_map.hpp\"\n\n";
     text += "namespace " + name_ + "::xcp {\n\n";
     text += "inline constexpr std::uint32_t parameters_address = " + std::to_string(parameters_xcp_address) + ";\n";
-    text += "inline constexpr std::uint32_t signals_address = " + std::to_string(signals_xcp_address) + ";\n\n";
+    text += "inline constexpr std::uint32_t signals_address = " + std::to_string(signals_xcp_address) + ";\n";
+    text += "inline constexpr std::uint32_t executive_address = " + std::to_string(executive_xcp_address) + ";\n\n";
     text += "inline duet::xcp::CalibrationSegment calibration_segment() {\n";
     text += "  return {.name = \"parameters\",\n          .address = parameters_address,\n";
     text += "          .size = sizeof(Parameters),\n";
@@ -301,6 +303,15 @@ class FileWriter {
     text += "  return {.name = \"signals\",\n          .address = signals_address,\n";
     text +=
         "          .size = sizeof(Signals),\n          .memory = reinterpret_cast<std::uint8_t*>(&signals)};\n}\n\n";
+    text +=
+        "// The executive's account: the port keeps it up to date, XCP reads it (the A2L's executive.* "
+        "measurements).\n";
+    text += "using ExecutiveAccount = duet::rt::ExecutiveAccount<" + std::to_string(program_.tasks.size()) + ">;\n";
+    text += "inline ExecutiveAccount executive_account{};\n\n";
+    text += "inline duet::xcp::MemoryRegion executive_region() {\n";
+    text += "  return {.name = \"executive\",\n          .address = executive_address,\n";
+    text += "          .size = sizeof(ExecutiveAccount),\n";
+    text += "          .memory = reinterpret_cast<std::uint8_t*>(&executive_account)};\n}\n\n";
     text += "inline constexpr duet::xcp::EventChannel events[] = {\n";
     for (const ProgramTask& task : program_.tasks) {
       const auto [cycle, unit] = event_cycle(program_, task);
@@ -349,12 +360,52 @@ class FileWriter {
       variable.description = signal->description;
       description.measurements.push_back(variable);
     }
+    add_executive_account(description);
     for (std::size_t index = 0; index < program_.tasks.size(); ++index) {
       const ProgramTask& task = program_.tasks[index];
       const auto [cycle, unit] = event_cycle(program_, task);
       description.events.push_back({task.name, static_cast<std::uint16_t>(index), cycle, unit, 0});
     }
     return banner("/*", source_, " */") + xcp::host::write_a2l(description);
+  }
+
+  // The executive's account (duet/rt/executive_account.hpp) as measurements: executive.busy_ppm, ...,
+  // executive.TASK.max_cycles with TASK the task's name made an identifier ("rate 1": rate_1).
+  void add_executive_account(xcp::host::A2lDescription& description) const {
+    const auto word = [](std::string name, std::uint32_t offset, std::string text, std::string unit = {}) {
+      return xcp::host::Variable{.name = std::move(name),
+                                 .description = std::move(text),
+                                 .type = xcp::host::DataType::uint32,
+                                 .address = executive_xcp_address + offset,
+                                 .unit = std::move(unit),
+                                 .minimum = 0,
+                                 .maximum = 4294967295.0};
+    };
+    description.memory.push_back(
+        {"executive", 0, executive_xcp_address, static_cast<std::uint32_t>(16 + 20 * program_.tasks.size()), false});
+    description.measurements.push_back(word("executive.ticks", 0, "base ticks so far (the low 32 bits)"));
+    description.measurements.push_back(word("executive.busy_ppm", 4, "core load", "ppm"));
+    description.measurements.push_back(word("executive.overruns", 8, "releases that found their task unfinished"));
+    description.measurements.push_back(word("executive.cycle_hz", 12, "the frequency the cycle counts count", "Hz"));
+    static constexpr std::array<std::pair<const char*, const char*>, 5> fields{{
+        {"activations", "completed runs"},
+        {"overruns", "releases that found it unfinished"},
+        {"min_cycles", "shortest net execution time"},
+        {"mean_cycles", "mean net execution time"},
+        {"max_cycles", "longest net execution time"},
+    }};
+    for (std::size_t task = 0; task < program_.tasks.size(); ++task) {
+      std::string identifier = program_.tasks[task].name;
+      for (char& character : identifier) {
+        if (std::isalnum(static_cast<unsigned char>(character)) == 0) character = '_';
+      }
+      for (std::size_t field = 0; field < fields.size(); ++field) {
+        description.measurements.push_back(word("executive." + identifier + "." + fields[field].first,
+                                                static_cast<std::uint32_t>(16 + 20 * task + 4 * field),
+                                                program_.tasks[task].name + ": " + fields[field].second,
+                                                field >= 2 ? "cycles" : ""));
+      }
+    }
   }
 
   static xcp::host::Variable a2l_variable(const Field& field, std::uint32_t base) {

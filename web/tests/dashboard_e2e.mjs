@@ -3,15 +3,15 @@
 // signal on the scope, takes a triggered capture, and screenshots every page.
 //
 //   node tests/dashboard_e2e.mjs --url http://127.0.0.1:PORT/ --artefacts DIR
-//        [--parameter P --value 0.05] [--signal theta] [--trigger-level 0|auto] [--timeout-s 30]
+//        [--parameter P --value 0.05] [--signal theta] [--trigger-level 0|auto] [--timeout-s 30] [--expect-tasks yes]
 //
 // Prints one JSON line of results; exits 0 when every check passed, 1 naming the failed step.
 import { mkdir } from 'node:fs/promises';
 import path from 'node:path';
 import { launchChromium, parseOptions, waitFor } from './browser.mjs';
 
-const usage = 'usage: dashboard_e2e.mjs --url URL --artefacts DIR [--parameter P] [--value V] [--signal NAME] [--trigger-level L] [--timeout-s S]';
-const options = parseOptions(process.argv.slice(2), { url: '', artefacts: '', parameter: 'P', value: '0.05', signal: 'theta', 'trigger-level': '0', 'timeout-s': '30' }, usage);
+const usage = 'usage: dashboard_e2e.mjs --url URL --artefacts DIR [--parameter P] [--value V] [--signal NAME] [--trigger-level L|auto] [--timeout-s S] [--expect-tasks yes]';
+const options = parseOptions(process.argv.slice(2), { url: '', artefacts: '', parameter: 'P', value: '0.05', signal: 'theta', 'trigger-level': '0', 'timeout-s': '30', 'expect-tasks': 'no' }, usage);
 if (!options.url || !options.artefacts) {
   console.error(usage);
   process.exit(2);
@@ -133,6 +133,11 @@ try {
   step = 'showing the status';
   await openTab('status');
   await page.waitForSelector('#status-tasks tbody tr, #status-counters table', { timeout: timeoutMs });
+  if (options['expect-tasks'] === 'yes') {
+    step = "showing the executive's task table";
+    await page.waitForSelector('#status-tasks tbody tr', { timeout: timeoutMs });
+    results.tasks = await page.locator('#status-tasks tbody tr').count();
+  }
   results.link = await page.textContent('#status-link');
   await shot('status.png');
 

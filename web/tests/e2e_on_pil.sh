@@ -5,6 +5,8 @@
 #            with an UPLOAD, and the page shows the value read back; theta comes by DAQ at 1 kHz.
 #   bridge   the bridge's own dashboard (the application channel, theta at 100 Hz): after the P slider's write the
 #            value the firmware received (linux_gains[0]) is read over XCP through the bridge.
+# Either way the Status page must show the executive's task table (the application channel's account, or the
+# account in memory that duet monitor uploads).
 # Screenshots of every page go to ARTEFACTS. Prints "skipped: ..." (ctest's skip pattern) when something it needs is
 # not built.
 # Usage: e2e_on_pil.sh monitor|bridge DUET FIRMWARE A2L ARTEFACTS
@@ -52,7 +54,7 @@ else
 fi
 
 node "$web/tests/dashboard_e2e.mjs" --url "$page" --artefacts "$artefacts" --parameter P --value "$value" \
-  --signal theta --trigger-level auto --timeout-s 40
+  --signal theta --trigger-level auto --timeout-s 40 --expect-tasks yes
 
 if [[ $backend == bridge ]]; then
   # What the firmware took from the application channel, read over XCP through the bridge.

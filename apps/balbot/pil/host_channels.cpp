@@ -29,7 +29,8 @@ namespace app_channel = duet::app_channel;
 
 constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
 
-// XCP: the model's calibration segment and signals (balbot_xcp.hpp, at the A2L's addresses), an event per task.
+// XCP: the model's calibration segment, its signals and the executive's account (balbot_xcp.hpp, at the A2L's
+// addresses), an event per task.
 void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
   const cortex_m::InterruptMask masked;
   std::memcpy(destination, bytes.data(), bytes.size());
@@ -38,7 +39,7 @@ void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std
 constexpr std::size_t max_cto = 248;
 constexpr std::size_t max_dto = 248;
 const std::array<xcp::CalibrationSegment, 1> segments{balbot::xcp::calibration_segment()};
-const std::array<xcp::MemoryRegion, 1> regions{balbot::xcp::signals_region()};
+const std::array<xcp::MemoryRegion, 2> regions{balbot::xcp::signals_region(), balbot::xcp::executive_region()};
 std::array<xcp::DaqList, 8> daq_lists{};
 std::array<xcp::Odt, 64> odts{};
 std::array<xcp::OdtEntry, 512> odt_entries{};

@@ -15,6 +15,7 @@
 #include <span>
 #include <string_view>
 
+#include "balbot_xcp.hpp"
 #include "duet/app_channel/endpoint.hpp"
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
@@ -72,9 +73,10 @@ class StatusReport {
     emit();
   }
 
-  // The same account for the dashboard's Status page, on the application channel.
+  // The same account for the dashboard's Status page: on the application channel, and in memory for XCP.
   template <typename Executive>
   void publish_account(const Executive& executive) {
+    balbot::xcp::executive_account.update(executive, duet::mps2_an386::core_clock_hz);  // for XCP
     const std::size_t count = model_.tasks.size() < tasks_.size() ? model_.tasks.size() : tasks_.size();
     for (std::size_t task = 0; task < count; ++task) {
       const duet::rt::TaskStatistics& statistics = executive.statistics(task);

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "thermostat.hpp"
+#include "duet/rt/executive_account.hpp"
 #include "duet/xcp/daq.hpp"
 #include "duet/xcp/memory_map.hpp"
 
@@ -13,6 +14,7 @@ namespace thermostat::xcp {
 
 inline constexpr std::uint32_t parameters_address = 65536;
 inline constexpr std::uint32_t signals_address = 131072;
+inline constexpr std::uint32_t executive_address = 196608;
 
 inline duet::xcp::CalibrationSegment calibration_segment() {
   return {.name = "parameters",
@@ -28,6 +30,17 @@ inline duet::xcp::MemoryRegion signals_region() {
           .address = signals_address,
           .size = sizeof(Signals),
           .memory = reinterpret_cast<std::uint8_t*>(&signals)};
+}
+
+// The executive's account: the port keeps it up to date, XCP reads it (the A2L's executive.* measurements).
+using ExecutiveAccount = duet::rt::ExecutiveAccount<1>;
+inline ExecutiveAccount executive_account{};
+
+inline duet::xcp::MemoryRegion executive_region() {
+  return {.name = "executive",
+          .address = executive_address,
+          .size = sizeof(ExecutiveAccount),
+          .memory = reinterpret_cast<std::uint8_t*>(&executive_account)};
 }
 
 inline constexpr duet::xcp::EventChannel events[] = {

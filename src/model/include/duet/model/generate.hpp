@@ -23,9 +23,11 @@ struct GeneratedFile {
   std::string text;
 };
 
-// The XCP addresses of the layout: parameters and signals start here, each field at its offset.
+// The XCP addresses of the layout: parameters and signals start here, each field at its offset; the executive's
+// account (duet/rt/executive_account.hpp) after them.
 inline constexpr std::uint32_t parameters_xcp_address = 0x0001'0000;
 inline constexpr std::uint32_t signals_xcp_address = 0x0002'0000;
+inline constexpr std::uint32_t executive_xcp_address = 0x0003'0000;
 
 // `source` names the model file in the files' first lines; `model_folder` is the model's folder relative to where the
 // files go, for the CMake fragment to find the Code blocks' headers.

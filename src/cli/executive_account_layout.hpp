@@ -1,0 +1,41 @@
+#pragma once
+// Where the executive's account lies in the target's memory, from the `executive.*` measurements of an A2L that
+// duet gen wrote (duet/rt/executive_account.hpp), and what its bytes say: the `executive` member of the dashboard's
+// status message (docs/DASHBOARD.md). duet monitor uploads the segment once a second.
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "duet/xcp/host/a2l.hpp"
+
+namespace duet::cli {
+
+class ExecutiveAccountLayout {
+ public:
+  // None when the A2L describes no account (a target whose firmware keeps none, or an older generation).
+  static std::optional<ExecutiveAccountLayout> from(const xcp::host::A2lDescription& a2l);
+
+  [[nodiscard]] const xcp::host::MemoryInfo& segment() const { return segment_; }
+  // The account as the status message's `executive`: time_s, ticks, core_load, overruns, tasks with times in us.
+  // `bytes` are the segment's, as uploaded.
+  [[nodiscard]] nlohmann::json decode(std::span<const std::uint8_t> bytes, double base_period_s) const;
+
+  // Whether a MEASUREMENT belongs to the account (not one of the model's signals).
+  static bool is_account(const xcp::host::Variable& measurement);
+
+ private:
+  struct Task {
+    std::string name;
+    std::array<std::optional<std::uint32_t>, 5> offsets;  // activations, overruns, min, mean, max cycles
+  };
+  xcp::host::MemoryInfo segment_;
+  std::array<std::optional<std::uint32_t>, 4> offsets_;  // ticks, busy_ppm, overruns, cycle_hz
+  std::vector<Task> tasks_;
+};
+
+}  // namespace duet::cli
