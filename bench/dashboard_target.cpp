@@ -14,18 +14,12 @@
 #include "duet/xcp/host/a2l.hpp"
 #include "duet/xcp/host/slave_server.hpp"
 #include "duet/xcp/slave.hpp"
+#include "test_target.hpp"
 
 namespace {
 
 using namespace duet::xcp;
 using namespace duet::xcp::host;
-
-std::mutex queue_mutex;
-std::uint32_t lock_queue() {
-  queue_mutex.lock();
-  return 0;
-}
-void unlock_queue(std::uint32_t) { queue_mutex.unlock(); }
 
 std::uint32_t microseconds() {
   const auto now = std::chrono::steady_clock::now().time_since_epoch();
@@ -60,7 +54,7 @@ int main(int argc, char** argv) {
   std::array<OdtEntry, 16> entries{};
   static std::array<std::uint8_t, 1 << 18> queue_storage{};
   std::array<std::uint8_t, 256> download_buffer{};
-  TransmitQueue queue{queue_storage, {lock_queue, unlock_queue}};
+  TransmitQueue queue{queue_storage, {lock_test_queue, unlock_test_queue}};  // test_target.hpp's lock
   const SlaveConfiguration configuration{.memory = MemoryMap{regions},
                                          .segments = segments,
                                          .max_cto = 248,
