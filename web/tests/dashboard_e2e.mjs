@@ -105,25 +105,38 @@ try {
   await shot('scope_desktop.png');
   await page.setViewportSize({ width: 480, height: 800 });
 
-  if (options['trigger-level'] === 'auto') {
-    const level = await page.evaluate((name) => {
+  // `auto`: the median of the signal's last 20 values, a level it crosses again soon unless it drifts away; if it
+  // has not within a third of the time allowed, the recorder is armed again at the level of then.
+  const automatic = options['trigger-level'] === 'auto';
+  const levelNow = () =>
+    page.evaluate((name) => {
       const names = [...document.querySelectorAll('input[data-signal]')].map((box) => box.dataset.signal);
-      const recent = [...(window.e2eRecent[names.indexOf(name)] ?? [])].sort((a, b) => a - b);
+      const recent = (window.e2eRecent[names.indexOf(name)] ?? []).slice(-20).sort((a, b) => a - b);
       return recent.length > 0 ? recent[Math.floor(recent.length / 2)] : NaN;
     }, options.signal);
-    if (!Number.isFinite(level)) throw new Error(`no values of ${options.signal} to choose a trigger level from`);
-    options['trigger-level'] = String(level);
-    results.trigger_level = level;
-  }
   step = `capturing ${options.signal} through ${options['trigger-level']}`;
   await openTab('recorder');
   await page.selectOption('#recorder-signal', options.signal);
-  await page.fill('#recorder-level', options['trigger-level']);
   await page.selectOption('#recorder-edge', 'either');
   await page.fill('#recorder-pre', '0.5');
   await page.fill('#recorder-post', '1');
-  await page.click('#recorder-arm');
-  await waitFor('the recorder to trigger', timeoutMs, () => page.evaluate(() => window.e2eRecorderStates.includes('triggered')));
+  const attempts = automatic ? 3 : 1;
+  for (let attempt = 1; ; attempt += 1) {
+    const level = automatic ? await levelNow() : Number(options['trigger-level']);
+    if (!Number.isFinite(level)) throw new Error(`no values of ${options.signal} to choose a trigger level from`);
+    results.trigger_level = level;
+    step = `capturing ${options.signal} through ${level}`;
+    await page.fill('#recorder-level', String(level));
+    await page.click('#recorder-arm');
+    try {
+      await waitFor('the recorder to trigger', timeoutMs / attempts, () =>
+        page.evaluate(() => window.e2eRecorderStates.includes('triggered')),
+      );
+      break;
+    } catch (error) {
+      if (attempt === attempts) throw error;
+    }
+  }
   const captured = await waitFor('a plotted capture', timeoutMs, async () => Number(await page.getAttribute('#recorder-plot', 'data-captured')) || 0);
   if ((await page.locator('#recorder-plot canvas').count()) === 0) throw new Error('the capture has no chart');
   results.captured = captured;
