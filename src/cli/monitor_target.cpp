@@ -154,6 +154,8 @@ class MonitorTarget::Impl {
     const auto found = std::find_if(parameters_.begin(), parameters_.end(),
                                     [&](const Element& element) { return element.name() == name; });
     if (found == parameters_.end()) return client.error("set: '" + name + "' is no parameter (CHARACTERISTIC)");
+    // A write kept for a target that is not there would land, unasked, whenever it comes back.
+    if (link_state_ != LinkState::open) return client.error("set " + name + ": the target is not connected");
     auto bytes = encode(*found->variable, value);
     if (!bytes) return client.error("set " + name + ": " + bytes.error());
     {

@@ -149,6 +149,33 @@ TEST_F(MonitorTargetTest, StatusSaysTheLinkIsOpen) {
   EXPECT_GT((*status)["xcp"]["samples"].get<int>(), 0);
 }
 
+TEST(MonitorTargetAway, SaysSoAndRefusesWrites) {
+  boost::asio::io_context io;
+  const Endpoint nobody{Protocol::tcp, "127.0.0.1", 1};  // refused at once
+  auto monitor = MonitorTarget::create(io, {.target = nobody, .a2l = TestTarget::a2l(nobody)});
+  ASSERT_TRUE(monitor.ok());
+  ASSERT_TRUE(monitor.value()->start().ok());
+  std::thread serving{[&io] { io.run(); }};
+  {
+    WebSocketClient client{monitor.value()->port()};
+    ASSERT_TRUE(client.next("description"));  // from the A2L, target or not
+    client.send({{"type", "set"}, {"name", "gain"}, {"value", 2}});
+    const auto error = client.next("error");
+    ASSERT_TRUE(error);
+    EXPECT_EQ((*error)["message"], "set gain: the target is not connected");
+    std::optional<json> status;
+    do {
+      client.send({{"type", "status"}});
+      status = client.next("status");
+    } while (status && !(*status)["link"].contains("problem"));
+    ASSERT_TRUE(status);
+    EXPECT_NE((*status)["link"]["problem"].get<std::string>().find("127.0.0.1:1"), std::string::npos) << *status;
+  }
+  io.stop();
+  serving.join();
+  monitor.value()->stop();
+}
+
 TEST(MonitorTargetOptions, NamesASignalTheA2lLacks) {
   boost::asio::io_context io;
   const Endpoint endpoint{Protocol::tcp, "127.0.0.1", 1};
