@@ -79,7 +79,7 @@ TEST_F(MonitorTargetTest, DescribesTheA2lsSignalsAndParametersAndSamplesThemByDa
 
 TEST_F(MonitorTargetTest, ASetIsDownloadedAndReadBack) {
   WebSocketClient client{monitor->port()};
-  ASSERT_TRUE(client.next("description"));
+  ASSERT_TRUE(client.next("samples"));  // connected: writes are taken from now on
   client.send({{"type", "set"}, {"name", "gain"}, {"value", 2.5}});
   const auto answer = client.answer_on("gain");
   ASSERT_TRUE(answer);
@@ -98,7 +98,7 @@ TEST_F(MonitorTargetTest, ASetIsDownloadedAndReadBack) {
 
 TEST_F(MonitorTargetTest, RefusesWritesTheA2lForbids) {
   WebSocketClient client{monitor->port()};
-  ASSERT_TRUE(client.next("description"));
+  ASSERT_TRUE(client.next("samples"));
   client.send({{"type", "set"}, {"name", "gain"}, {"value", 1000}});
   auto error = client.next("error");
   ASSERT_TRUE(error);
