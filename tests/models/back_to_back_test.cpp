@@ -2,8 +2,10 @@
 // computes from the model, tick by tick, with the same tuning at the same ticks and the same traffic to the plant.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <random>
 
@@ -102,8 +104,12 @@ Recording run_generated(const Example& example, LoggingPlant& plant) {
   EXPECT_TRUE(a2l_text.ok());
   auto a2l = xcp::host::read_a2l(a2l_text.value());
   EXPECT_TRUE(a2l.ok()) << a2l.error();
+  // The model's signals, not the executive's account that the A2L describes beside them (executive_xcp_address).
+  std::vector<xcp::host::Variable> measurements;
+  std::copy_if(a2l.value().measurements.begin(), a2l.value().measurements.end(), std::back_inserter(measurements),
+               [](const xcp::host::Variable& measurement) { return measurement.address < executive_xcp_address; });
   Recording recording;
-  for (const xcp::host::Variable& measurement : a2l.value().measurements) {
+  for (const xcp::host::Variable& measurement : measurements) {
     for (std::uint32_t element = 0; element < measurement.count; ++element) {
       std::string name = measurement.name;
       std::replace(name.begin(), name.end(), '.', '/');
@@ -130,7 +136,7 @@ Recording run_generated(const Example& example, LoggingPlant& plant) {
     port.advance(1);
     recording.time_s.push_back(static_cast<double>(tick) * period_s);
     std::size_t column = 0;
-    for (const xcp::host::Variable& measurement : a2l.value().measurements) {
+    for (const xcp::host::Variable& measurement : measurements) {
       const auto* base = static_cast<const std::byte*>(example.signals) + (measurement.address - signals_xcp_address);
       for (std::uint32_t element = 0; element < measurement.count; ++element) {
         recording.columns[column++].push_back(
