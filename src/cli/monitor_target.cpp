@@ -41,6 +41,12 @@ struct Element {
     return variable->address + index * static_cast<std::uint32_t>(size_of(variable->type));
   }
   [[nodiscard]] std::size_t size() const { return size_of(variable->type); }
+  // The physical value of this element's bytes.
+  [[nodiscard]] double decode(std::span<const std::uint8_t> bytes) const {
+    Variable scalar = *variable;
+    scalar.count = 1;
+    return xcp::host::decode(scalar, bytes).front();
+  }
 };
 
 std::string type_name(DataType type) {
@@ -59,13 +65,6 @@ std::vector<Element> elements_of(const Variable& variable) {
   for (std::uint32_t index = 0; index < variable.count; ++index) elements.push_back({&variable, index});
   return elements;
 }
-
-double seconds_per_unit(std::uint8_t code) {
-  static constexpr double seconds[] = {1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0};
-  return code < std::size(seconds) ? seconds[code] : 1e-6;
-}
-
-double period_s(const EventInfo& event) { return seconds_per_unit(event.time_unit) * event.time_cycle; }
 
 }  // namespace
 
@@ -93,9 +92,9 @@ class MonitorTarget::Impl {
     }
     parameter_values_.assign(parameters_.size(), std::nullopt);
     for (const EventInfo& info : a2l.events) {
-      if (info.time_cycle != 0 && (base_period_s_ == 0 || period_s(info) < base_period_s_))
-        base_period_s_ = period_s(info);
-      if (options_.event.empty() ? info.time_cycle != 0 && (!event_ || period_s(info) < period_s(*event_))
+      if (info.time_cycle != 0 && (base_period_s_ == 0 || info.period_s() < base_period_s_))
+        base_period_s_ = info.period_s();
+      if (options_.event.empty() ? info.time_cycle != 0 && (!event_ || info.period_s() < event_->period_s())
                                  : info.name == options_.event || std::to_string(info.channel) == options_.event)
         event_ = info;
     }
@@ -139,7 +138,7 @@ class MonitorTarget::Impl {
   void describe() {
     dashboard::Description description{options_.a2l.module.empty() ? options_.a2l.project : options_.a2l.module,
                                        "monitor",
-                                       event_ ? static_cast<std::uint32_t>(period_s(*event_) * 1e6 + 0.5) : 0,
+                                       event_ ? static_cast<std::uint32_t>(event_->period_s() * 1e6 + 0.5) : 0,
                                        {},
                                        {}};
     for (const Element& element : signals_) description.telemetry.push_back(item_of(element));
@@ -249,12 +248,12 @@ class MonitorTarget::Impl {
   }
 
   Status sample(Master& master) {
-    const double tick_s = seconds_per_unit(options_.a2l.timestamp_unit) * options_.a2l.timestamp_ticks;
+    const double tick_s = options_.a2l.timestamp_tick_s();
     std::optional<std::uint32_t> last_timestamp;
     std::uint64_t ticks = 0;
     bool timestamped = false;
     std::uint64_t count = 0;
-    const double event_s = event_ ? period_s(*event_) : 0.0;
+    const double event_s = event_ ? event_->period_s() : 0.0;
     std::vector<double> times;
     std::vector<std::vector<double>> columns(signals_.size());
     auto block_started = Clock::now();
@@ -279,10 +278,9 @@ class MonitorTarget::Impl {
         std::size_t at = 0;
         for (std::size_t signal = 0; signal < signals_.size(); ++signal) {
           const Element& element = signals_[signal];
-          const std::span<const std::uint8_t> bytes = std::span{sample.bytes}.subspan(at, element.size());
-          Variable scalar = *element.variable;
-          scalar.count = 1;
-          columns[signal].push_back(at + element.size() <= sample.bytes.size() ? decode(scalar, bytes).front() : 0.0);
+          columns[signal].push_back(at + element.size() <= sample.bytes.size()
+                                        ? element.decode(std::span{sample.bytes}.subspan(at, element.size()))
+                                        : 0.0);
           at += element.size();
         }
       }
@@ -347,9 +345,7 @@ class MonitorTarget::Impl {
     auto bytes =
         master.upload(element.variable->extension, element.address(), static_cast<std::uint32_t>(element.size()));
     if (!bytes) return Failure{bytes.error()};
-    Variable scalar = *element.variable;
-    scalar.count = 1;
-    return decode(scalar, bytes.value()).front();
+    return element.decode(bytes.value());
   }
 
   // On the io thread.

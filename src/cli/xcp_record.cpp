@@ -49,12 +49,6 @@ Result<std::vector<TimedWrite>> parse_timed_writes(const Session& session, const
   return writes;
 }
 
-// ASAM's time unit codes: 0 = 1 ns, 1 = 10 ns, ... 9 = 1 s.
-double seconds_per_unit(std::uint8_t code) {
-  static constexpr double seconds[] = {1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0};
-  return code < std::size(seconds) ? seconds[code] : 1e-6;
-}
-
 }  // namespace
 
 ExitCode run_record(const XcpOptions& options, Streams streams) {
@@ -107,8 +101,8 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
   for (const plot::Series& column : figure.series) csv << ',' << column.name;
   csv << '\n';
 
-  const double tick_seconds = seconds_per_unit(a2l.timestamp_unit) * a2l.timestamp_ticks;
-  const double event_period_s = seconds_per_unit(event->time_unit) * event->time_cycle;
+  const double tick_seconds = a2l.timestamp_tick_s();
+  const double event_period_s = event->period_s();
   const bool terminal = ::isatty(STDERR_FILENO) != 0 && &streams.err == &std::cerr;
   const auto start = std::chrono::steady_clock::now();
   const auto end = start + std::chrono::duration<double>(options.duration_s);

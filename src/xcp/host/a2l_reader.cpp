@@ -378,6 +378,11 @@ Result<A2lDescription> read_a2l(std::string_view text, std::string_view source) 
   return a2l;
 }
 
+double seconds_per_unit(std::uint8_t code) {
+  static constexpr double seconds[] = {1e-9, 1e-8, 1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2, 1e-1, 1.0};
+  return code < std::size(seconds) ? seconds[code] : 1e-6;
+}
+
 std::size_t size_of(DataType type) {
   switch (type) {
     case DataType::uint8:

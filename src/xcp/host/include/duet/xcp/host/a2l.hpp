@@ -17,6 +17,9 @@ namespace duet::xcp::host {
 enum class DataType : std::uint8_t { uint8, int8, uint16, int16, uint32, int32, uint64, int64, float32, float64 };
 
 std::size_t size_of(DataType type);
+// Seconds per tick of ASAM's time unit codes (events, timestamps): 0 = 1 ns, 1 = 10 ns, ... 9 = 1 s; an unknown code
+// counts as 1 us.
+double seconds_per_unit(std::uint8_t code);
 std::string_view a2l_name(DataType type);  // UBYTE, SWORD, FLOAT32_IEEE, ...
 
 // physical = factor * raw + offset
@@ -47,6 +50,7 @@ struct EventInfo {
   std::uint8_t time_cycle = 0;  // in time_unit; 0: not periodic
   std::uint8_t time_unit = 6;   // 0 = 1 ns ... 6 = 1 ms ... 9 = 1 s
   std::uint8_t priority = 0;
+  [[nodiscard]] double period_s() const { return seconds_per_unit(time_unit) * time_cycle; }  // 0: not periodic
   bool operator==(const EventInfo&) const = default;
 };
 
@@ -72,6 +76,7 @@ struct A2lDescription {
   std::uint16_t max_daq_lists = 16;
   std::uint8_t timestamp_unit = 3;  // 3 = 1 us
   std::uint16_t timestamp_ticks = 1;
+  [[nodiscard]] double timestamp_tick_s() const { return seconds_per_unit(timestamp_unit) * timestamp_ticks; }
   Endpoint transport;
   bool operator==(const A2lDescription&) const = default;
 };
