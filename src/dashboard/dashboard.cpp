@@ -71,8 +71,7 @@ void Dashboard::describe(Description description) {
   parameter_values_.assign(description.parameters.size(), std::nullopt);
   if (recorder_.state() != Recorder::State::idle) {
     recorder_.cancel();  // its signal index may mean another signal now
-    server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), description)),
-                      Delivery::always);
+    server_.broadcast(recorder_message(recorder_.state(), description), Delivery::always);
   }
   description_ = std::move(description);
   server_.broadcast(description_message_, Delivery::always);
@@ -112,6 +111,10 @@ void Dashboard::samples(std::span<const double> time_s, const std::vector<std::v
   }
 }
 
+Message Dashboard::recorder_message(Recorder::State state, const Description& description) const {
+  return dashboard::message(recorder_json(state, recorder_.settings(), description));
+}
+
 void Dashboard::channel(bool open) {
   server_.broadcast(dashboard::message({{"type", "channel"}, {"open", open}}), Delivery::always);
 }
@@ -121,9 +124,7 @@ void Dashboard::feed_recorder(double time_s, std::span<const double> values) {
   auto capture = recorder_.take(time_s, values);
   if (!description_) return;
   if (before == Recorder::State::armed && recorder_.state() != Recorder::State::armed) {  // triggered just now
-    server_.broadcast(
-        dashboard::message(recorder_json(Recorder::State::triggered, recorder_.settings(), *description_)),
-        Delivery::always);
+    server_.broadcast(recorder_message(Recorder::State::triggered, *description_), Delivery::always);
   }
   if (!capture) return;
   const Item& signal = description_->telemetry[capture->settings.signal];
@@ -135,8 +136,7 @@ void Dashboard::feed_recorder(double time_s, std::span<const double> values) {
                                         {"time_s", capture->time_s},
                                         {"values", capture->values}}),
                     Delivery::always);
-  server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
-                    Delivery::always);
+  server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
 }
 
 void Dashboard::welcome(Client& client) {
@@ -152,8 +152,7 @@ void Dashboard::welcome(Client& client) {
                 Delivery::always);
   }
   if (recorder_.state() != Recorder::State::idle)
-    client.send(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
-                Delivery::always);
+    client.send(recorder_message(recorder_.state(), *description_), Delivery::always);
 }
 
 void Dashboard::handle(Client& client, const json& request) {
@@ -170,9 +169,7 @@ void Dashboard::handle(Client& client, const json& request) {
   if (type == "record") return record(client, request);
   if (type == "cancel_record") {
     recorder_.cancel();
-    if (description_)
-      server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
-                        Delivery::always);
+    if (description_) server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
     return;
   }
   client.error("unknown request type '" + type + "': set, describe, status, record or cancel_record");
@@ -203,8 +200,7 @@ void Dashboard::record(Client& client, const json& request) {
                                  .post_s = *post_s};
   const double period_s = std::max(description_->telemetry_period_us, 1U) * 1e-6;
   if (Status armed = recorder_.arm(settings, telemetry.size(), period_s); !armed) return client.error(armed.error());
-  server_.broadcast(dashboard::message(recorder_json(recorder_.state(), recorder_.settings(), *description_)),
-                    Delivery::always);
+  server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
 }
 
 json Dashboard::status() const {

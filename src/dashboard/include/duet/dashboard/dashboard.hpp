@@ -71,6 +71,8 @@ class Dashboard {
   void handle(Client& client, const nlohmann::json& request);
   void record(Client& client, const nlohmann::json& request);
   void feed_recorder(double time_s, std::span<const double> values);
+  // The `recorder` message of `state` with the armed settings.
+  [[nodiscard]] Message recorder_message(Recorder::State state, const Description& description) const;
   void tick_status();
   [[nodiscard]] nlohmann::json status() const;
 
