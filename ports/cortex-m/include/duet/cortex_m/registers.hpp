@@ -10,6 +10,12 @@ inline volatile std::uint32_t& register32(std::uintptr_t address) {
   return *reinterpret_cast<volatile std::uint32_t*>(address);
 }
 
+// Changes the bits `clear` of the 32-bit register at `address` to those of `set`, by reading, modifying and
+// writing it: not atomic, so only where nothing else writes the register meanwhile (configuration at start-up).
+inline void modify32(std::uintptr_t address, std::uint32_t clear, std::uint32_t set) {
+  register32(address) = (register32(address) & ~clear) | set;
+}
+
 // The 8-bit register at `address` (the NVIC's priority fields are byte-addressable).
 inline volatile std::uint8_t& register8(std::uintptr_t address) {
   return *reinterpret_cast<volatile std::uint8_t*>(address);

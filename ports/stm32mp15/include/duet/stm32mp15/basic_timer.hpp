@@ -5,6 +5,8 @@
 
 #include <cstdint>
 
+#include "duet/cortex_m/registers.hpp"
+
 namespace duet::stm32mp15 {
 
 inline constexpr std::uintptr_t tim6_base = 0x4000'4000;
@@ -53,12 +55,8 @@ class BasicTimer {
   [[nodiscard]] std::uint32_t count() const { return read(cnt); }
 
  private:
-  [[nodiscard]] std::uint32_t read(std::uint32_t offset) const {
-    return *reinterpret_cast<const volatile std::uint32_t*>(base_ + offset);
-  }
-  void write(std::uint32_t offset, std::uint32_t value) const {
-    *reinterpret_cast<volatile std::uint32_t*>(base_ + offset) = value;
-  }
+  [[nodiscard]] std::uint32_t read(std::uint32_t offset) const { return cortex_m::register32(base_ + offset); }
+  void write(std::uint32_t offset, std::uint32_t value) const { cortex_m::register32(base_ + offset) = value; }
 
   std::uintptr_t base_;
 };

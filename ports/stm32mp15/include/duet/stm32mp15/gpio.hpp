@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include "duet/cortex_m/registers.hpp"
+
 namespace duet::stm32mp15 {
 
 // GPIOA .. GPIOK: port 0 is A.
@@ -40,14 +42,10 @@ class GpioPort {
   [[nodiscard]] bool read(unsigned pin) const { return (read_register(idr) & 1U << pin) != 0; }
 
  private:
-  [[nodiscard]] std::uint32_t read_register(std::uint32_t offset) const {
-    return *reinterpret_cast<const volatile std::uint32_t*>(base_ + offset);
-  }
-  void write(std::uint32_t offset, std::uint32_t value) const {
-    *reinterpret_cast<volatile std::uint32_t*>(base_ + offset) = value;
-  }
+  [[nodiscard]] std::uint32_t read_register(std::uint32_t offset) const { return cortex_m::register32(base_ + offset); }
+  void write(std::uint32_t offset, std::uint32_t value) const { cortex_m::register32(base_ + offset) = value; }
   void modify(std::uint32_t offset, std::uint32_t clear, std::uint32_t set_bits) const {
-    write(offset, (read_register(offset) & ~clear) | set_bits);
+    cortex_m::modify32(base_ + offset, clear, set_bits);
   }
 
   std::uintptr_t base_;

@@ -7,6 +7,8 @@
 
 #include <cstdint>
 
+#include "duet/cortex_m/registers.hpp"
+
 namespace duet::stm32mp15 {
 
 inline constexpr std::uintptr_t ipcc_base = 0x4C00'1000;
@@ -51,12 +53,8 @@ class Ipcc {
   }
 
  private:
-  [[nodiscard]] std::uint32_t read(std::uint32_t offset) const {
-    return *reinterpret_cast<const volatile std::uint32_t*>(base_ + offset);
-  }
-  void write(std::uint32_t offset, std::uint32_t value) const {
-    *reinterpret_cast<volatile std::uint32_t*>(base_ + offset) = value;
-  }
+  [[nodiscard]] std::uint32_t read(std::uint32_t offset) const { return cortex_m::register32(base_ + offset); }
+  void write(std::uint32_t offset, std::uint32_t value) const { cortex_m::register32(base_ + offset) = value; }
 
   std::uintptr_t base_;
 };
