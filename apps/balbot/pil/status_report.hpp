@@ -73,22 +73,22 @@ class StatusReport {
     emit();
   }
 
-  // The same account for the dashboard's Status page: on the application channel, and in memory for XCP.
+  // The same account for the dashboard's Status page: in memory for XCP, and from there on the application channel.
   template <typename Executive>
   void publish_account(const Executive& executive) {
-    balbot::xcp::executive_account.update(executive, duet::mps2_an386::core_clock_hz);  // for XCP
-    const std::size_t count = model_.tasks.size() < tasks_.size() ? model_.tasks.size() : tasks_.size();
+    const auto& account = balbot::xcp::executive_account;
+    balbot::xcp::executive_account.update(executive, duet::mps2_an386::core_clock_hz);
+    const std::size_t count = account.tasks.size() < tasks_.size() ? account.tasks.size() : tasks_.size();
     for (std::size_t task = 0; task < count; ++task) {
-      const duet::rt::TaskStatistics& statistics = executive.statistics(task);
-      tasks_[task] = {model_.tasks[task].name,  statistics.activations,
-                      statistics.overruns,      statistics.activations == 0 ? 0U : statistics.min_cycles,
-                      statistics.mean_cycles(), statistics.max_cycles};
+      const duet::rt::TaskAccount& figures = account.tasks[task];
+      tasks_[task] = {model_.tasks[task].name, figures.activations, figures.overruns,
+                      figures.min_cycles,      figures.mean_cycles, figures.max_cycles};
     }
-    publish_executive({.ticks = executive.ticks(),
+    publish_executive({.ticks = executive.ticks(),  // all 64 bits; the account keeps the low 32
                        .base_period_ns = model_.base_period_ns,
-                       .busy_ppm = executive.load().busy_ppm(),
-                       .overruns = static_cast<std::uint32_t>(duet::mps2_an386::total_overruns(executive, model_)),
-                       .cycle_hz = duet::mps2_an386::core_clock_hz,
+                       .busy_ppm = account.busy_ppm,
+                       .overruns = account.overruns,
+                       .cycle_hz = account.cycle_hz,
                        .tasks = std::span{tasks_}.first(count)});
   }
 
