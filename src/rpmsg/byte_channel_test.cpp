@@ -5,12 +5,11 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <deque>
 #include <random>
 #include <vector>
 
 #include "linux_side.hpp"
+#include "recording_protocol.hpp"
 
 namespace duet::rpmsg {
 namespace {
@@ -20,24 +19,7 @@ using testing::layout;
 using testing::LinuxSide;
 using testing::vring1_at;
 
-// A protocol whose frames are whatever the test queued, framed a few bytes at a time as a real one frames packets.
-struct RecordingProtocol {
-  std::vector<std::uint8_t> received;
-  std::deque<std::uint8_t> queued;
-  std::size_t frame_size = 100;
-
-  void receive(std::span<const std::uint8_t> bytes) { received.insert(received.end(), bytes.begin(), bytes.end()); }
-  std::size_t transmit(std::span<std::uint8_t> out) {
-    std::size_t written = 0;
-    while (!queued.empty() && written + std::min(frame_size, queued.size()) <= out.size()) {
-      const std::size_t frame = std::min(frame_size, queued.size());
-      std::copy_n(queued.begin(), frame, out.begin() + static_cast<std::ptrdiff_t>(written));
-      queued.erase(queued.begin(), queued.begin() + static_cast<std::ptrdiff_t>(frame));
-      written += frame;
-    }
-    return written;
-  }
-};
+using testing::RecordingProtocol;
 
 void no_doorbell(unsigned) {}
 

@@ -1,0 +1,72 @@
+#include "duet/stm32mp15/linux_link.hpp"
+
+#include <bit>
+
+namespace duet::stm32mp15 {
+namespace {
+
+const LinuxLinkConfiguration* doorbells = nullptr;  // the link's, for Device's notify, which has no context
+
+// A ring as Linux described it: where it put it, and a size and alignment our vring code can take.
+bool usable(const volatile VringResource& ring) {
+  const std::uint32_t entries = ring.entries;
+  return ring.device_address != address_any && entries != 0 && entries <= 0x8000 &&
+         std::has_single_bit(entries) && std::has_single_bit(static_cast<std::uint32_t>(ring.align));
+}
+
+}  // namespace
+
+LinuxLink::LinuxLink(const LinuxLinkConfiguration& configuration)
+    : configuration_(configuration),
+      endpoints_{configuration.xcp->endpoint("rpmsg-tty", xcp_address),
+                 configuration.application->endpoint("rpmsg-tty", application_address)},
+      device_({&transmit_, &receive_, configuration.memory_at, ring, endpoints_}) {
+  doorbells = &configuration_;
+}
+
+void LinuxLink::ring(unsigned vring) {
+  // A doorbell still ringing from last time covers this one: Linux takes every used buffer when it answers.
+  (void)doorbells->ipcc.ring(doorbells->table->vrings[vring].notify_id);
+}
+
+bool LinuxLink::try_start() {
+  if (started_) return true;
+  volatile ResourceTable& table = *configuration_.table;
+  if ((table.vdev.status & virtio_status_driver_ok) == 0) return false;
+  if (!usable(table.vrings[0]) || !usable(table.vrings[1])) {
+    problem_ = LinkProblem::bad_vring;
+    return false;
+  }
+  const auto layout = [](const volatile VringResource& ring) {
+    return rpmsg::VringLayout{static_cast<std::uint16_t>(ring.entries), ring.align};
+  };
+  transmit_ = rpmsg::DeviceVring{configuration_.memory_at(table.vrings[0].device_address), layout(table.vrings[0])};
+  receive_ = rpmsg::DeviceVring{configuration_.memory_at(table.vrings[1].device_address), layout(table.vrings[1])};
+  configuration_.ipcc.start(1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown |
+                            1U << ipcc_channel::detach);
+  problem_ = LinkProblem::none;
+  started_ = true;
+  serve();  // announces, and takes whatever Linux sent already
+  return true;
+}
+
+void LinuxLink::serve() {
+  if (!started_) return;
+  const Ipcc& ipcc = configuration_.ipcc;
+  const std::uint32_t pending = ipcc.pending();
+  // Acknowledged before the rings are read, so that a message Linux adds meanwhile rings again.
+  for (const unsigned channel : {ipcc_channel::vring0, ipcc_channel::vring1, ipcc_channel::detach}) {
+    if ((pending & 1U << channel) != 0) ipcc.acknowledge(channel);
+  }
+  if (!announced_) announced_ = device_.announce();
+  device_.receive();
+  configuration_.xcp->pump(device_, endpoints_[0]);
+  configuration_.application->pump(device_, endpoints_[1]);
+  if ((pending & 1U << ipcc_channel::shutdown) != 0) {
+    ++shutdown_requests_;
+    configuration_.on_shutdown();
+    ipcc.acknowledge(ipcc_channel::shutdown);  // Linux waits up to 500 ms for this, then resets the core
+  }
+}
+
+}  // namespace duet::stm32mp15

@@ -1,0 +1,128 @@
+// The M4's link to Linux on the PC: a resource table as remoteproc fills it, a Linux side in shared memory that
+// behaves as rpmsg_virtio does, and the IPCC as a fake register file. The link waits for DRIVER_OK, announces XCP
+// then the application channel as rpmsg-tty, carries bytes both ways, and answers Linux's shutdown request after
+// the outputs are safe.
+#include "duet/stm32mp15/linux_link.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <string>
+
+#include "linux_side.hpp"
+#include "recording_protocol.hpp"
+
+namespace duet::stm32mp15 {
+namespace {
+
+using rpmsg::testing::buffer_at;
+using rpmsg::testing::layout;
+using rpmsg::testing::LinuxSide;
+using rpmsg::testing::RecordingProtocol;
+using rpmsg::testing::vring1_at;
+
+int safe_states = 0;
+void enter_safe_state() { ++safe_states; }
+
+class LinuxLinkTest : public ::testing::Test {
+ protected:
+  LinuxLinkTest() {
+    table.vdev.status = 0;
+    table.vrings[0] = {address_any, 16, 16, 0, 0};
+    table.vrings[1] = {address_any, 16, 16, 1, 0};
+    safe_states = 0;
+  }
+
+  // What remoteproc and rpmsg_virtio do before the M4 can talk: the rings placed, the driver ready.
+  void linux_is_ready() {
+    table.vrings[0].device_address = 0;  // offsets into the shared memory; 0 is where LinuxSide put vring0
+    table.vrings[1].device_address = static_cast<std::uint32_t>(vring1_at);
+    table.vdev.status = 0x07;  // ACKNOWLEDGE | DRIVER | DRIVER_OK
+  }
+  // Linux rings `channel` for the M4.
+  void ring(unsigned channel) { ipcc_register(Ipcc::c1toc2sr) |= 1U << channel; }
+  std::uint32_t& ipcc_register(std::uint32_t offset) { return ipcc_registers[offset / 4]; }
+
+  LinuxSide linux_side;
+  ResourceTable table{};
+  std::array<std::uint32_t, 8> ipcc_registers{};
+  RecordingProtocol xcp, application;
+  rpmsg::ByteChannel xcp_channel{xcp}, application_channel{application};
+  // The fake table is not where LinuxSide's memory is: vring addresses are offsets into it, as buffer addresses are.
+  LinuxLink link{{&table, Ipcc{reinterpret_cast<std::uintptr_t>(ipcc_registers.data())},
+                  [](std::uint64_t address) { return buffer_at(address); }, &xcp_channel, &application_channel,
+                  enter_safe_state}};
+};
+
+TEST_F(LinuxLinkTest, WaitsForLinuxsDriverWithoutTouchingTheIpcc) {
+  ipcc_registers.fill(0xAAAA'AAAA);
+  for (int poll = 0; poll < 3; ++poll) EXPECT_FALSE(link.try_start());
+  EXPECT_FALSE(link.started());
+  EXPECT_EQ(link.problem(), LinkProblem::waiting_for_linux);
+  EXPECT_EQ(ipcc_register(Ipcc::c2cr), 0xAAAA'AAAAU);
+  link.serve();  // an early doorbell interrupt does nothing
+  EXPECT_TRUE(linux_side.receive().empty());
+}
+
+TEST_F(LinuxLinkTest, RefusesRingsLinuxDidNotPlace) {
+  table.vdev.status = 0x07;
+  EXPECT_FALSE(link.try_start());
+  EXPECT_EQ(link.problem(), LinkProblem::bad_vring);
+  linux_is_ready();
+  table.vrings[1].entries = 12;  // not a power of two
+  EXPECT_FALSE(link.try_start());
+  table.vrings[1].entries = 16;
+  EXPECT_TRUE(link.try_start());
+  EXPECT_EQ(link.problem(), LinkProblem::none);
+}
+
+TEST_F(LinuxLinkTest, AnnouncesXcpThenTheApplicationChannel) {
+  linux_is_ready();
+  ASSERT_TRUE(link.try_start());
+  EXPECT_EQ(ipcc_register(Ipcc::c2cr), Ipcc::receive_interrupt);
+  EXPECT_EQ(ipcc_register(Ipcc::c2mr), 0x3F'0030U);  // channels 0-3 unmasked for receiving, every transmit masked
+  const auto announcements = linux_side.receive();
+  ASSERT_EQ(announcements.size(), 2U);
+  for (std::size_t channel = 0; channel < 2; ++channel) {
+    EXPECT_EQ(announcements[channel].destination, rpmsg::name_service_address);
+    EXPECT_EQ(announcements[channel].source, rpmsg::first_local_address + channel);
+    EXPECT_EQ(std::string(reinterpret_cast<const char*>(announcements[channel].payload.data())), "rpmsg-tty");
+  }
+  EXPECT_EQ(ipcc_register(Ipcc::c2scr), 1U << 16);  // vring0's doorbell rung for Linux
+}
+
+TEST_F(LinuxLinkTest, CarriesBytesBothWaysOnEachChannel) {
+  linux_is_ready();
+  ASSERT_TRUE(link.try_start());
+  linux_side.receive();
+  ASSERT_TRUE(linux_side.send(0x500, LinuxLink::xcp_address, {0xFF, 0x00}));           // CONNECT
+  ASSERT_TRUE(linux_side.send(0x501, LinuxLink::application_address, {0x81}));         // describe
+  ring(ipcc_channel::vring1);
+  link.serve();
+  EXPECT_EQ(xcp.received, (std::vector<std::uint8_t>{0xFF, 0x00}));
+  EXPECT_EQ(application.received, (std::vector<std::uint8_t>{0x81}));
+  EXPECT_EQ(ipcc_register(Ipcc::c2scr), 1U << (16 + ipcc_channel::vring1));  // Linux told its buffers are back
+
+  xcp.queued = {0xFF, 0x10};
+  application.queued = {0x01, 0x02, 0x03};
+  link.serve();
+  const auto messages = linux_side.receive();
+  ASSERT_EQ(messages.size(), 2U);
+  EXPECT_EQ(messages[0].destination, 0x500U);
+  EXPECT_EQ(messages[0].payload, (std::vector<std::uint8_t>{0xFF, 0x10}));
+  EXPECT_EQ(messages[1].destination, 0x501U);
+  EXPECT_EQ(messages[1].payload, (std::vector<std::uint8_t>{0x01, 0x02, 0x03}));
+}
+
+TEST_F(LinuxLinkTest, ShutdownMakesTheOutputsSafeThenAcknowledges) {
+  linux_is_ready();
+  ASSERT_TRUE(link.try_start());
+  ring(ipcc_channel::shutdown);
+  link.serve();
+  EXPECT_EQ(safe_states, 1);
+  EXPECT_EQ(link.shutdown_requests(), 1U);
+  EXPECT_EQ(ipcc_register(Ipcc::c2scr), 1U << ipcc_channel::shutdown);
+}
+
+}  // namespace
+}  // namespace duet::stm32mp15
