@@ -1,5 +1,9 @@
 #include "duet/mps2_an386/executive_port.hpp"
 
+#include <array>
+
+#include "duet/cortex_m/task_interrupts.hpp"
+
 namespace duet::mps2_an386 {
 namespace {
 
@@ -8,18 +12,14 @@ constexpr std::uint32_t nanoseconds_per_second = 1'000'000'000;
 }  // namespace
 
 bool ExecutivePort::configure(const rt::ModelDescription& model) {
-  const std::size_t rates = rt::rate_count(model);
-  if (rates > max_rates) return false;
+  constexpr auto rate_lines = [] {
+    std::array<unsigned, max_rates> lines{};
+    for (std::size_t rate = 0; rate < max_rates; ++rate) lines[rate] = rate_interrupt(rate);
+    return lines;
+  }();
+  if (rt::rate_count(model) > max_rates) return false;
   cycle_counter.start_free_running();
-  cortex_m::set_priority_grouping(model.sub_priority_bits);
-  for (std::size_t index = 0; index < model.tasks.size(); ++index) {
-    const rt::Task& task = model.tasks[index];
-    const unsigned line = index == 0 ? timer0_interrupt : index < rates ? rate_interrupt(index) : task.interrupt;
-    cortex_m::set_interrupt_priority(
-        line, cortex_m::grouped_priority(task.priority.group, task.priority.sub, model.sub_priority_bits));
-    cortex_m::enable_interrupt(line);
-  }
-  return true;
+  return cortex_m::configure_task_interrupts(model, {timer0_interrupt, rate_lines});
 }
 
 void ExecutivePort::start_base_timer(std::uint32_t period_ns) {
