@@ -1,126 +1,25 @@
 // XCP on UART0 and the application channel on UART1: the two RPMsg ttys of the board, which QEMU's first two -serial
 // options stand in for (the bridge opens them as it opens /dev/ttyRPMSG0 and 1). Each UART's receive and transmit
-// interrupts, at the lowest priority, move its bytes both ways: XCP commands are handled there, below every task,
-// and the tasks only queue (DAQ samples, telemetry) and pend the transmit interrupt.
-
-#include <array>
-#include <bit>
-#include <cstring>
+// interrupts, at the lowest priority, move its bytes both ways for the protocols of firmware/robot_channels.cpp.
 
 #include "balbot.hpp"
-#include "balbot_xcp.hpp"
-#include "duet/app_channel/endpoint.hpp"
 #include "duet/cortex_m/interrupts.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
-#include "duet/mps2_an386/executive_port.hpp"
 #include "duet/mps2_an386/microsecond_clock.hpp"
 #include "duet/mps2_an386/uart_line.hpp"
-#include "duet/xcp/stream_transport.hpp"
+#include "robot_channels.hpp"
 #include "robot_firmware.hpp"
 
 namespace balbot::pil {
 namespace {
 
 namespace board = duet::mps2_an386;
-namespace cortex_m = duet::cortex_m;
-namespace xcp = duet::xcp;
-namespace app_channel = duet::app_channel;
 
-constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
-
-// XCP: the model's calibration segment, its signals and the executive's account (balbot_xcp.hpp, at the A2L's
-// addresses), an event per task.
-void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
-  const cortex_m::InterruptMask masked;
-  std::memcpy(destination, bytes.data(), bytes.size());
-}
-
-constexpr std::size_t max_cto = 248;
-constexpr std::size_t max_dto = 248;
-const std::array<xcp::CalibrationSegment, 1> segments{balbot::xcp::calibration_segment()};
-const std::array<xcp::MemoryRegion, 2> regions{balbot::xcp::signals_region(), balbot::xcp::executive_region()};
-std::array<xcp::DaqList, 8> daq_lists{};
-std::array<xcp::Odt, 64> odts{};
-std::array<xcp::OdtEntry, 512> odt_entries{};
-std::array<std::uint8_t, 16 * 1024> xcp_queue_storage{};
-std::array<std::uint8_t, 256> download_buffer{};
-xcp::TransmitQueue xcp_queue{xcp_queue_storage, interrupt_lock};
-const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions},
-                                                .segments = segments,
-                                                .max_cto = max_cto,
-                                                .max_dto = max_dto,
-                                                .identification = "balbot",
-                                                .write_atomically = write_with_interrupts_masked,
-                                                .download_buffer = download_buffer,
-                                                .events = balbot::xcp::events,
-                                                .daq = {daq_lists, odts, odt_entries},
-                                                .queue = &xcp_queue,
-                                                .timestamp = board::elapsed_microseconds,  // the A2L's unit
-                                                .timestamp_unit = 3,                       // 1 us
-                                                .timestamp_ticks = 1};
-xcp::Slave slave{xcp_configuration};
-std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
-std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
-xcp::StreamTransport xcp_transport{slave,   xcp_queue,        xcp::ethernet_framing, xcp_decoder_buffer,
-                                   max_cto, xcp_packet_buffer};
-board::UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base}, board::uart0_receive_interrupt,
-                                               board::uart0_transmit_interrupt};
-
-// The application channel: what the thesis' Linux application shows (theta, battery voltage, distance) and sets
-// (the PID's P, I, D), as the model sends and takes them.
-struct RobotMessage {
-  float theta;
-  float battery;
-  float distance;
-};
-RobotMessage telemetry{};
-struct Gains {
-  float p;
-  float i;
-  float d;
-};
-Gains gains{balbot::reference_parameters.P, balbot::reference_parameters.I, balbot::reference_parameters.D};
-Gains gains_sent = gains;  // what the model was last told
-std::uint32_t telemetry_sample = 0;
-
-const app_channel::Item telemetry_items[] = {app_channel::item("theta", "deg", telemetry.theta, -90, 90),
-                                             app_channel::item("battery", "V", telemetry.battery, 0, 12.6),
-                                             app_channel::item("distance", "cm", telemetry.distance, 0, 400)};
-const app_channel::Item gain_items[] = {app_channel::item("P", "", gains.p, 0, 1),
-                                        app_channel::item("I", "", gains.i, 0, 1),
-                                        app_channel::item("D", "", gains.d, 0, 1)};
-const app_channel::Application application{"balbot", 10'000, telemetry_items, gain_items};
-std::array<std::uint8_t, 4096> application_queue_storage{};
-xcp::TransmitQueue application_queue{application_queue_storage, interrupt_lock};
-std::array<std::uint8_t, app_channel::decoder_buffer_size> application_decoder_buffer{};
-std::array<std::uint8_t, app_channel::max_packet> application_packet_buffer{};
-app_channel::Endpoint endpoint{application, application_queue, interrupt_lock, application_decoder_buffer,
-                               application_packet_buffer};
-board::UartLine<app_channel::Endpoint> application_line{
+board::UartLine<duet::xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base},
+                                                     board::uart0_receive_interrupt, board::uart0_transmit_interrupt};
+board::UartLine<duet::app_channel::Endpoint> application_line{
     board::CmsdkUart{board::uart1_base}, board::uart1_receive_interrupt, board::uart1_transmit_interrupt};
-
-constexpr unsigned gains_interrupt_line = duet::hardware::interrupt_number("IPCC_RX1");
-
-// A set from Linux changed the gains: the model hears of it as the thesis' robot does, through IPCC_RX1.
-void tell_the_model_of_new_gains() {
-  const bool changed = std::bit_cast<std::uint32_t>(gains.p) != std::bit_cast<std::uint32_t>(gains_sent.p) ||
-                       std::bit_cast<std::uint32_t>(gains.i) != std::bit_cast<std::uint32_t>(gains_sent.i) ||
-                       std::bit_cast<std::uint32_t>(gains.d) != std::bit_cast<std::uint32_t>(gains_sent.d);
-  if (!changed) return;
-  {
-    const cortex_m::InterruptMask masked;
-    gains_sent = gains;
-  }
-  cortex_m::set_interrupt_pending(gains_interrupt_line);
-}
-
-template <typename T>
-void bytes_to(std::span<const double> bytes, T& value) {
-  std::array<std::uint8_t, sizeof(T)> raw{};
-  for (std::size_t k = 0; k < raw.size() && k < bytes.size(); ++k) raw[k] = static_cast<std::uint8_t>(bytes[k]);
-  std::memcpy(&value, raw.data(), raw.size());
-}
 
 }  // namespace
 
@@ -129,43 +28,26 @@ void start_host_channels() {
   application_line.start();
 }
 
-void on_task_finished(std::size_t task) {
-  slave.on_event(static_cast<std::uint16_t>(task));
-  if (xcp_queue.free_bytes() != xcp_queue.capacity()) xcp_line.kick();
-}
-
-void publish_executive(const app_channel::ExecutiveReport& report) {
-  (void)endpoint.publish_executive(
-      report);  // a full queue loses this second's account, counted nowhere: the next comes
-  application_line.kick();
-}
-
-void send_to_linux(std::span<const double> message_bytes) {
-  bytes_to(message_bytes, telemetry);
-  endpoint.publish(telemetry_sample++);
-  application_line.kick();
-}
-
-void receive_from_linux(std::span<double> message_bytes) {
-  std::array<std::uint8_t, sizeof(Gains)> raw{};
-  {
-    const cortex_m::InterruptMask masked;
-    std::memcpy(raw.data(), &gains_sent, raw.size());
-  }
-  for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0.0;
-}
-
 HostChannelCounters host_channel_counters() {
   return {xcp_line.bytes_received(), xcp_line.bytes_sent(), application_line.bytes_received(),
-          application_line.bytes_sent(), endpoint.samples_dropped()};
+          application_line.bytes_sent(), firmware::telemetry_dropped()};
 }
 
 }  // namespace balbot::pil
 
-extern "C" void UART0_RX_IRQHandler() { balbot::pil::xcp_line.serve(balbot::pil::xcp_transport); }
-extern "C" void UART0_TX_IRQHandler() { balbot::pil::xcp_line.serve(balbot::pil::xcp_transport); }
+namespace balbot::firmware {
+
+void kick_xcp() { pil::xcp_line.kick(); }
+void kick_application() { pil::application_line.kick(); }
+std::uint32_t microseconds() { return duet::mps2_an386::elapsed_microseconds(); }
+void pend_gains_task() { duet::cortex_m::set_interrupt_pending(duet::hardware::interrupt_number("IPCC_RX1")); }
+
+}  // namespace balbot::firmware
+
+extern "C" void UART0_RX_IRQHandler() { balbot::pil::xcp_line.serve(balbot::firmware::xcp_transport()); }
+extern "C" void UART0_TX_IRQHandler() { balbot::pil::xcp_line.serve(balbot::firmware::xcp_transport()); }
 extern "C" void UART1_RX_IRQHandler() {
-  balbot::pil::application_line.serve(balbot::pil::endpoint);
-  balbot::pil::tell_the_model_of_new_gains();
+  balbot::pil::application_line.serve(balbot::firmware::application_endpoint());
+  balbot::firmware::tell_the_model_of_new_gains();
 }
-extern "C" void UART1_TX_IRQHandler() { balbot::pil::application_line.serve(balbot::pil::endpoint); }
+extern "C" void UART1_TX_IRQHandler() { balbot::pil::application_line.serve(balbot::firmware::application_endpoint()); }

@@ -25,6 +25,7 @@
 #include "duet/mps2_an386/executive_port.hpp"
 #include "duet/mps2_an386/executive_report.hpp"
 #include "duet/rt/executive.hpp"
+#include "robot_channels.hpp"
 #include "robot_firmware.hpp"
 #include "status_report.hpp"
 
@@ -41,7 +42,7 @@ constexpr std::size_t task_capacity = std::size(balbot::tasks);
 // The board's executive port, plus DAQ after every task and the console's report between ticks.
 class RobotPort : public board::ExecutivePort {
  public:
-  void task_finished(std::size_t task) { on_task_finished(task); }
+  void task_finished(std::size_t task) { firmware::on_task_finished(task); }
   void idle();
 };
 

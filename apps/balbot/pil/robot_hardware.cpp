@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "duet/hardware/hardware.hpp"
+#include "robot_channels.hpp"
 #include "robot_firmware.hpp"
 
 namespace duet::hardware {
@@ -16,7 +17,7 @@ constexpr std::string_view linux_channel = "ipc:app";
 
 void write(std::string_view resource, std::span<const double> values) {
   if (resource == linux_channel) {
-    balbot::pil::send_to_linux(values);
+    balbot::firmware::send_to_linux(values);
   } else {
     balbot::pil::plant_link().write(resource, values);
   }
@@ -24,7 +25,7 @@ void write(std::string_view resource, std::span<const double> values) {
 
 void read(std::string_view resource, std::span<double> values) {
   if (resource == linux_channel) {
-    balbot::pil::receive_from_linux(values);
+    balbot::firmware::receive_from_linux(values);
   } else {
     balbot::pil::plant_link().read(resource, values);
   }

@@ -10,13 +10,10 @@
 // A task line per task follows every status line, then the channels' line. Cycles count the board's 25 MHz timer
 // (40 ns), which the plant link holds while it talks to the plant: net execution times, without preemption.
 
-#include <array>
 #include <cstdint>
-#include <span>
 #include <string_view>
 
-#include "balbot_xcp.hpp"
-#include "duet/app_channel/endpoint.hpp"
+#include "account_publisher.hpp"
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/mps2_an386/board.hpp"
@@ -62,7 +59,7 @@ class StatusReport {
   template <typename Executive>
   void status(const Executive& executive) {
     duet::mps2_an386::write_executive_report(executive, model_);
-    publish_account(executive);
+    account_.publish(executive, duet::mps2_an386::core_clock_hz);
     const HostChannelCounters counters = host_channel_counters();
     line_.clear();
     line_.append("duet-channels xcp_received=").append(counters.xcp_bytes_received);
@@ -71,25 +68,6 @@ class StatusReport {
     line_.append(" application_sent=").append(counters.application_bytes_sent);
     line_.append(" telemetry_dropped=").append(counters.telemetry_dropped);
     emit();
-  }
-
-  // The same account for the dashboard's Status page: in memory for XCP, and from there on the application channel.
-  template <typename Executive>
-  void publish_account(const Executive& executive) {
-    const auto& account = balbot::xcp::executive_account;
-    balbot::xcp::executive_account.update(executive, duet::mps2_an386::core_clock_hz);
-    const std::size_t count = account.tasks.size() < tasks_.size() ? account.tasks.size() : tasks_.size();
-    for (std::size_t task = 0; task < count; ++task) {
-      const duet::rt::TaskAccount& figures = account.tasks[task];
-      tasks_[task] = {model_.tasks[task].name, figures.activations, figures.overruns,
-                      figures.min_cycles,      figures.mean_cycles, figures.max_cycles};
-    }
-    publish_executive({.ticks = executive.ticks(),  // all 64 bits; the account keeps the low 32
-                       .base_period_ns = model_.base_period_ns,
-                       .busy_ppm = account.busy_ppm,
-                       .overruns = account.overruns,
-                       .cycle_hz = account.cycle_hz,
-                       .tasks = std::span{tasks_}.first(count)});
   }
 
   static std::string_view reason(duet::rt::StopReason reason) {
@@ -110,7 +88,7 @@ class StatusReport {
 
   const duet::rt::ModelDescription& model_;
   duet::TextBuffer<240> line_;
-  std::array<duet::app_channel::TaskReport, 16> tasks_{};
+  balbot::firmware::AccountPublisher account_{model_};
   std::uint64_t ticks_per_report_ = 1000;
   std::uint64_t next_report_ = 1000;
 };

@@ -1,0 +1,41 @@
+#pragma once
+// What the robot's firmware says to Linux, on every board: XCP (the model's parameters, its signals and the
+// executive's account at the A2L's addresses, an event per task) and the application channel (theta, battery voltage
+// and distance out; the PID's P, I, D in, which reach the model as the thesis' IPCC_RX1 message does). The board
+// carries the bytes, on QEMU's UARTs (pil/) or on the STM32MP15's RPMsg ttys (board/), and supplies the functions
+// marked so; robot_channels.cpp is the rest.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "duet/app_channel/endpoint.hpp"
+#include "duet/xcp/stream_transport.hpp"
+
+namespace balbot::firmware {
+
+// Supplied by the board.
+void kick_xcp();                // XCP has queued bytes: pend the interrupt that sends them
+void kick_application();        // so has the application channel
+std::uint32_t microseconds();   // DAQ timestamps, in the A2L's unit; interrupt-safe
+void pend_gains_task();         // the model's IPCC_RX1 task: new gains came from Linux
+
+// For the board's lines: the protocols whose bytes they carry.
+duet::xcp::StreamTransport& xcp_transport();
+duet::app_channel::Endpoint& application_endpoint();
+// After the application channel took bytes: a set from Linux that changed the gains tells the model.
+void tell_the_model_of_new_gains();
+
+// For the model and the executive.
+// After task `task` (its index in the task table) ran: DAQ samples its event.
+void on_task_finished(std::size_t task);
+// The model's message to Linux (IpcSend: theta, battery voltage, distance as little-endian floats), published on the
+// application channel.
+void send_to_linux(std::span<const double> message_bytes);
+// The message Linux sent last (IpcReceive: P, I, D as little-endian floats), as the model reads it.
+void receive_from_linux(std::span<double> message_bytes);
+// The executive's account for the dashboard's Status page, on the application channel (from the background loop).
+void publish_executive(const duet::app_channel::ExecutiveReport& report);
+[[nodiscard]] std::uint32_t telemetry_dropped();
+
+}  // namespace balbot::firmware
