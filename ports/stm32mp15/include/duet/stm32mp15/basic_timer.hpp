@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "duet/cortex_m/registers.hpp"
+#include "duet/stm32mp15/timer_counts.hpp"
 
 namespace duet::stm32mp15 {
 
@@ -26,17 +27,11 @@ class BasicTimer {
   // An update interrupt every `period_ns` of a `clock_hz` input clock; false (nothing touched) for a period the
   // 16-bit prescaler and counter cannot make, or one shorter than two counts.
   [[nodiscard]] bool start(std::uint64_t period_ns, std::uint32_t clock_hz) const {
-    if (period_ns > 1'000'000'000'000U) return false;  // 1000 s: no base rate is that slow
-    // Whole seconds and the rest apart, so that no product overflows 64 bits.
-    const std::uint64_t counts =
-        period_ns / 1'000'000'000U * clock_hz + period_ns % 1'000'000'000U * clock_hz / 1'000'000'000U;
-    if (counts < 2) return false;
-    const std::uint64_t prescaler = (counts - 1) / 0x1'0000U;  // the smallest that lets the counter reach it
-    if (prescaler > 0xFFFF) return false;
-    const std::uint64_t reload = counts / (prescaler + 1) - 1;
+    const TimeBase time_base = time_base_for(period_ns, clock_hz);
+    if (!time_base.possible) return false;
     write(cr1, 0);
-    write(psc, static_cast<std::uint32_t>(prescaler));
-    write(arr, static_cast<std::uint32_t>(reload));
+    write(psc, time_base.prescaler);
+    write(arr, time_base.reload);
     write(cnt, 0);
     write(egr, update_generation);  // loads the prescaler now; it sets UIF, which is no tick
     write(sr, 0);
