@@ -1,0 +1,273 @@
+// The robot's peripherals on the STM32MP15, set up as the thesis' blocks set them up (section 5.5), and the model's
+// resources routed to them. Numbers: TIM1 PWM at 2 kHz on channels 3 (PE13, right motor PWMA) and 4 (PE14, left
+// PWMB), its channel 1 compare as the "TIM1" task once per period; hall encoders' A signals captured on rising edges
+// by TIM2 channel 1 (PG8, left) and TIM4 channel 4 (PD15, right), the ultrasonic echo on both edges by TIM5
+// channel 2 (PH11), all counting at 1 MHz; the MPU6500 on SPI5 with DMA2 streams 3 (transmit) and 2 (receive),
+// its INT on PE8 (EXTI8); the battery on ADC1 channel 6 (PF12) by DMA2 stream 4.
+
+#include "robot_peripherals.hpp"
+
+#include <array>
+#include <cstddef>
+#include <span>
+#include <string_view>
+
+#include "duet/cortex_m/board_hooks.hpp"
+#include "duet/cortex_m/interrupts.hpp"
+#include "duet/hardware/hardware.hpp"
+#include "duet/stm32mp15/adc.hpp"
+#include "duet/stm32mp15/board.hpp"
+#include "duet/stm32mp15/dma.hpp"
+#include "duet/stm32mp15/exti.hpp"
+#include "duet/stm32mp15/fault.hpp"
+#include "duet/stm32mp15/gpio.hpp"
+#include "duet/stm32mp15/rcc.hpp"
+#include "duet/stm32mp15/spi.hpp"
+#include "duet/stm32mp15/timer.hpp"
+#include "robot_channels.hpp"
+
+namespace balbot::board {
+namespace {
+
+namespace chip = duet::stm32mp15;
+namespace hardware = duet::hardware;
+
+constexpr std::uint64_t pwm_period_ns = 500'000;      // 2 kHz: the thesis' task 4, every 500 us
+constexpr float pwm_task_at_percent = 50.0F;          // where in the period the "TIM1" task runs (eq. 5.1)
+constexpr std::uint32_t capture_counter_hz = 1'000'000;
+
+constexpr chip::Timer pwm_timer{chip::tim1_base, true};
+constexpr chip::Timer left_hall_timer{chip::tim2_base, false};
+constexpr chip::Timer right_hall_timer{chip::tim4_base, false};
+constexpr chip::Timer echo_timer{chip::tim5_base, false};
+constexpr unsigned pwm_task_channel = 1, right_pwm_channel = 3, left_pwm_channel = 4;
+constexpr unsigned left_hall_channel = 1, right_hall_channel = 4, echo_channel = 2;
+constexpr chip::Exti exti{};
+constexpr unsigned imu_interrupt_line = 8;
+
+constexpr hardware::Pin echo_pin = hardware::pin("PH11");
+
+// The MPU6500 on SPI5: DMA2 stream 3 transmits, stream 2 receives (the thesis' streams; the model's tasks are named
+// after them); at most 1 MHz, what the MPU6500 takes for every register.
+constexpr std::uint32_t imu_clock_hz = 1'000'000;
+constexpr std::size_t imu_transfer_capacity = 32;
+constexpr std::uint8_t mpu6500_read = 0x80;  // the address byte's bit 7: a read
+chip::SpiMaster<imu_transfer_capacity> imu_bus{
+    chip::spi5_base, chip::DmaStream{chip::dma2_base, 3, chip::dma2_request_line(3)}, chip::dma_request::spi5_tx,
+    chip::DmaStream{chip::dma2_base, 2, chip::dma2_request_line(2)}, chip::dma_request::spi5_rx};
+bool imu_read_transfer = false;  // whether the transfer under way reads (its receive-complete task runs)
+
+// The battery on ADC1 channel 6, DMA2 stream 4.
+constexpr unsigned battery_channel = 6;
+chip::AdcSampler<1024> battery_adc{chip::adc1_base, chip::adc12_common_base,
+                                   chip::DmaStream{chip::dma2_base, 4, chip::dma2_request_line(4)},
+                                   chip::dma_request::adc1};
+constexpr hardware::Pin imu_chip_select = hardware::pin("PE7");
+
+// The motor driver's standby and direction inputs low (TB6612FNG: standby, outputs off), the PWM off.
+constexpr auto gpio_of = [](hardware::Pin pin) { return chip::gpio_base(pin.port); };
+constexpr std::array safe_pins{
+    chip::SafePin{gpio_of(hardware::pin("PA12")), hardware::pin("PA12").number, false},  // MTR_STBY
+    chip::SafePin{gpio_of(hardware::pin("PE9")), hardware::pin("PE9").number, false},    // MTRL_P
+    chip::SafePin{gpio_of(hardware::pin("PD1")), hardware::pin("PD1").number, false},    // MTRL_N
+    chip::SafePin{gpio_of(hardware::pin("PE10")), hardware::pin("PE10").number, false},  // MTRR_P
+    chip::SafePin{gpio_of(hardware::pin("PD14")), hardware::pin("PD14").number, false},  // MTRR_N
+};
+constexpr std::array safe_timers{chip::PwmTimer{chip::tim1_base, true}};
+
+// What the capture handlers took, as the model reads it: [count, edge] (1 rising, 0 falling).
+struct CaptureReading {
+  std::uint32_t count = 0;
+  bool rising = true;
+};
+CaptureReading left_hall, right_hall, echo;
+
+bool take(const chip::Timer& timer, unsigned channel, CaptureReading& reading, bool rising) {
+  const chip::Capture capture = timer.take_capture(channel);
+  if (!capture.captured) return false;
+  reading = {capture.count, rising};
+  return true;
+}
+
+void read_capture(const CaptureReading& reading, std::span<double> values) {
+  CaptureReading now;
+  {
+    const duet::cortex_m::InterruptMask masked;  // the capture's handler may preempt
+    now = reading;
+  }
+  if (!values.empty()) values[0] = static_cast<double>(now.count);
+  if (values.size() > 1) values[1] = now.rising ? 1.0 : 0.0;
+}
+
+void start_clocks() {
+  const chip::Rcc rcc;
+  for (const unsigned port : {0U, 3U, 4U, 5U, 6U, 7U}) rcc.enable(chip::clock::gpio(port));  // A, D-H
+  for (const chip::PeripheralClock clock : {chip::clock::tim1, chip::clock::tim2, chip::clock::tim4, chip::clock::tim5,
+                                            chip::clock::spi5, chip::clock::dma2, chip::clock::dmamux,
+                                            chip::clock::adc12}) {
+    rcc.enable(clock);
+  }
+}
+
+// Alternate functions from the STM32MP157's datasheet (DS12505): TIM1 and TIM2 are AF1, TIM4 and TIM5 AF2, SPI5
+// AF5. PF12 (ADC1_INP6) stays in its reset mode, analog.
+void start_pins() {
+  using hardware::pin;
+  // Outputs, low first (the motor driver in standby, TRIG and FSYNC idle), then the IMU's chip select high (idle).
+  constexpr std::array outputs{pin("PA12"), pin("PE9"), pin("PD1"), pin("PE10"), pin("PD14"),
+                               pin("PE11"), pin("PE1"), pin("PE7")};
+  for (const hardware::Pin output : outputs) {
+    hardware::gpio_write(output, false);
+    chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number);
+  }
+  hardware::gpio_write(imu_chip_select, true);
+  constexpr std::array inputs{pin("PH6"), pin("PG3"), pin("PE8")};  // hall B signals, the IMU's INT
+  for (const hardware::Pin input : inputs) {
+    chip::GpioPort{chip::gpio_base(input.port)}.make_input(input.number, chip::Pull::none);
+  }
+  constexpr struct {
+    hardware::Pin pin;
+    unsigned function;
+  } alternates[] = {{pin("PE13"), 1}, {pin("PE14"), 1}, {pin("PG8"), 1}, {pin("PD15"), 2},
+                    {pin("PH11"), 2}, {pin("PF7"), 5},  {pin("PF8"), 5}, {pin("PF9"), 5}};
+  for (const auto& alternate : alternates) {
+    chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number, alternate.function);
+  }
+}
+
+// A resource the robot's board has not: the model names a peripheral this configuration does not route. Said once in
+// the log, since it repeats every step.
+void unknown_resource(std::string_view resource) {
+  static bool said = false;
+  if (said) return;
+  said = true;
+  duet::cortex_m::console_write("balbot: the model uses a resource this board does not route: ");
+  duet::cortex_m::console_write(resource);
+  duet::cortex_m::console_write("\n");
+}
+
+bool start_imu_bus() { return imu_bus.start(chip::spi5_kernel_clock_hz, imu_clock_hz); }
+bool start_battery_adc() { return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz); }
+
+// The model's SpiDma block: one transaction, chip select low for its length. A transfer still running refuses the
+// new one (HAL_BUSY in the thesis; the simulated robot refuses it too).
+void start_imu_transfer(std::span<const double> values) {
+  std::array<std::uint8_t, imu_transfer_capacity> bytes{};
+  const std::size_t count = values.size() < bytes.size() ? values.size() : bytes.size();
+  for (std::size_t k = 0; k < count; ++k) bytes[k] = static_cast<std::uint8_t>(values[k]);
+  if (count == 0 || imu_bus.busy()) return;
+  imu_read_transfer = (bytes[0] & mpu6500_read) != 0;
+  hardware::gpio_write(imu_chip_select, false);
+  if (!imu_bus.transfer(std::span{bytes}.first(count))) hardware::gpio_write(imu_chip_select, true);
+}
+
+void read_imu_bytes(std::span<double> values) {
+  const std::span<const std::uint8_t> received = imu_bus.received();
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < received.size() ? received[k] : 0.0;
+}
+
+// The model's AdcStart block: `count` conversions, ignored while a sequence runs (as the simulated robot does).
+void start_battery_samples(double count) {
+  if (!(count >= 1.0 && count <= 1024.0)) return;
+  (void)battery_adc.start(static_cast<std::uint32_t>(count));
+}
+
+void read_battery_samples(std::span<double> values) {
+  const std::span<const std::uint16_t> samples = battery_adc.samples();
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < samples.size() ? samples[k] : 0.0;
+}
+
+bool start_timers() {
+  const std::uint32_t clock = chip::timer_clock_hz;
+  return pwm_timer.configure_pwm(pwm_period_ns, clock) && pwm_timer.enable_pwm_output(right_pwm_channel, 0.0F) &&
+         pwm_timer.enable_pwm_output(left_pwm_channel, 0.0F) &&
+         pwm_timer.enable_compare_interrupt(pwm_task_channel, pwm_task_at_percent) &&
+         left_hall_timer.start_capture(left_hall_channel, chip::CaptureEdges::rising, capture_counter_hz, clock) &&
+         right_hall_timer.start_capture(right_hall_channel, chip::CaptureEdges::rising, capture_counter_hz, clock) &&
+         echo_timer.start_capture(echo_channel, chip::CaptureEdges::both, capture_counter_hz, clock);
+}
+
+}  // namespace
+}  // namespace balbot::board
+
+namespace balbot::board {
+
+bool start_peripherals() {
+  chip::set_safe_state({safe_pins, safe_timers});
+  start_clocks();
+  start_pins();
+  if (!start_timers() || !start_imu_bus() || !start_battery_adc()) {
+    chip::enter_safe_state();
+    return false;
+  }
+  exti.connect(imu_interrupt_line, hardware::pin("PE8").port, true, false);
+  pwm_timer.start();
+  return true;
+}
+
+bool on_pwm_period() { return pwm_timer.take_compare_flag(pwm_task_channel); }
+bool on_left_hall() { return take(left_hall_timer, left_hall_channel, left_hall, true); }
+bool on_right_hall() { return take(right_hall_timer, right_hall_channel, right_hall, true); }
+// Which edge: the timer does not say; the pin's level just after it does (the echo lasts at least 150 us).
+bool on_echo_edge() { return take(echo_timer, echo_channel, echo, hardware::gpio_read(echo_pin)); }
+bool on_spi_transmitted() { return imu_bus.on_transmit_interrupt().complete; }
+// The end of a transaction: chip select high; the model's receive task runs for reads only, as on the simulated robot
+// (an MPU6500 register write clocks in nothing worth reading).
+bool on_spi_received() {
+  const chip::DmaFlags flags = imu_bus.on_receive_interrupt();
+  if (!flags.complete && !flags.error) return false;
+  hardware::gpio_write(imu_chip_select, true);
+  return flags.complete && !flags.error && imu_read_transfer;
+}
+bool on_adc_samples() {
+  const chip::DmaFlags flags = battery_adc.on_dma_interrupt();
+  return flags.complete && !flags.error;
+}
+bool on_imu_data_ready() {
+  const bool rose = exti.rose(imu_interrupt_line);
+  exti.acknowledge(imu_interrupt_line);
+  return rose;
+}
+
+}  // namespace balbot::board
+
+namespace duet::hardware {
+
+void write(std::string_view resource, std::span<const double> values) {
+  using namespace balbot::board;
+  const double value = values.empty() ? 0.0 : values[0];
+  if (resource == "pwm:TIM1/3") {
+    (void)pwm_timer.set_duty(right_pwm_channel, static_cast<float>(value));
+  } else if (resource == "pwm:TIM1/4") {
+    (void)pwm_timer.set_duty(left_pwm_channel, static_cast<float>(value));
+  } else if (resource == "spi:SPI5") {
+    start_imu_transfer(values);
+  } else if (resource == "adc:ADC1/6") {
+    start_battery_samples(value);
+  } else if (resource == "ipc:app") {
+    balbot::firmware::send_to_linux(values);
+  } else {
+    unknown_resource(resource);
+  }
+}
+
+void read(std::string_view resource, std::span<double> values) {
+  using namespace balbot::board;
+  if (resource == "capture:TIM2/1") {
+    read_capture(left_hall, values);
+  } else if (resource == "capture:TIM4/4") {
+    read_capture(right_hall, values);
+  } else if (resource == "capture:TIM5/2") {
+    read_capture(echo, values);
+  } else if (resource == "spi:SPI5") {
+    read_imu_bytes(values);
+  } else if (resource == "adc:ADC1/6") {
+    read_battery_samples(values);
+  } else if (resource == "ipc:app") {
+    balbot::firmware::receive_from_linux(values);
+  } else {
+    unknown_resource(resource);
+  }
+}
+
+}  // namespace duet::hardware

@@ -1,0 +1,178 @@
+// The fault path on the PC: the safe state against fake GPIO and timer register files (one BSRR store per pin, every
+// compare register 0, MOE off on advanced timers only, nothing else touched), and the fault record filled from a fake
+// frame and fault status, taken once at the next start, garbage ignored.
+#include "duet/stm32mp15/fault.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <initializer_list>
+#include <optional>
+
+namespace duet::stm32mp15 {
+namespace {
+
+constexpr std::uint32_t untouched = 0xA5A5'0000;  // + the word's index: a register nobody wrote
+
+template <std::size_t Words>
+struct FakeRegisters {
+  FakeRegisters() {
+    for (std::uint32_t index = 0; index < Words; ++index) words[index] = untouched + index;
+  }
+  std::uintptr_t base() { return reinterpret_cast<std::uintptr_t>(words.data()); }
+  std::uint32_t& at(std::uint32_t offset) { return words[offset / 4]; }
+  std::array<std::uint32_t, Words> words;
+};
+
+using FakePort = FakeRegisters<10>;                       // GPIO, up to AFRH
+using FakeTimer = FakeRegisters<PwmTimer::bdtr / 4 + 1>;  // up to BDTR
+
+class SafeStateTest : public ::testing::Test {
+ protected:
+  void TearDown() override { set_safe_state({}); }
+
+  // Every word of `registers` as the fake made it, but those at `written` offsets.
+  template <std::size_t Words>
+  static void expect_untouched_but(FakeRegisters<Words>& registers, std::initializer_list<std::uint32_t> written) {
+    for (std::uint32_t index = 0; index < Words; ++index) {
+      if (std::find(written.begin(), written.end(), 4 * index) != written.end()) continue;
+      EXPECT_EQ(registers.words[index], untouched + index) << "offset " << 4 * index;
+    }
+  }
+
+  FakePort port_a, port_d, port_e;
+  FakeTimer tim1, tim4;
+};
+
+TEST_F(SafeStateTest, EachPinIsDrivenByOneBsrrStore) {
+  const std::array pins{SafePin{port_a.base(), 12, false},  // MTR_STBY low: the bridges off
+                        SafePin{port_d.base(), 14, false},  // MTRR_N
+                        SafePin{port_e.base(), 7, true}};   // a pin safe when high (e.g. a chip select)
+  set_safe_state({pins, {}});
+  enter_safe_state();
+  EXPECT_EQ(port_a.at(GpioPort::bsrr), 1U << (16 + 12));
+  EXPECT_EQ(port_d.at(GpioPort::bsrr), 1U << (16 + 14));
+  EXPECT_EQ(port_e.at(GpioPort::bsrr), 1U << 7);
+  expect_untouched_but(port_a, {GpioPort::bsrr});
+  expect_untouched_but(port_d, {GpioPort::bsrr});
+  expect_untouched_but(port_e, {GpioPort::bsrr});
+}
+
+TEST_F(SafeStateTest, PwmOutputsGoOffAndMoeOnlyOnAdvancedTimers) {
+  tim1.at(PwmTimer::bdtr) = PwmTimer::main_output_enable | 1U << 14 | 0x2A;  // MOE, AOE, a dead time
+  const std::array timers{PwmTimer{tim1.base(), true}, PwmTimer{tim4.base(), false}};
+  set_safe_state({{}, timers});
+  enter_safe_state();
+  for (const FakeTimer* timer : {&tim1, &tim4}) {
+    for (const std::uint32_t compare : PwmTimer::compare_registers) {
+      EXPECT_EQ(timer->words[compare / 4], 0U) << "offset " << compare;
+    }
+  }
+  EXPECT_EQ(tim1.at(PwmTimer::bdtr), 1U << 14 | 0x2A);  // MOE off, the rest kept
+  expect_untouched_but(tim1, {PwmTimer::ccr1, PwmTimer::ccr2, PwmTimer::ccr3, PwmTimer::ccr4, PwmTimer::bdtr});
+  expect_untouched_but(tim4, {PwmTimer::ccr1, PwmTimer::ccr2, PwmTimer::ccr3, PwmTimer::ccr4});
+}
+
+TEST_F(SafeStateTest, ThePinsAndTimersOfOneTableAllGoSafe) {
+  const std::array pins{SafePin{port_a.base(), 12, false}, SafePin{port_d.base(), 1, false}};
+  const std::array timers{PwmTimer{tim1.base(), true}};
+  set_safe_state({pins, timers});
+  enter_safe_state();
+  EXPECT_EQ(port_a.at(GpioPort::bsrr), 1U << 28);
+  EXPECT_EQ(port_d.at(GpioPort::bsrr), 1U << 17);
+  EXPECT_EQ(tim1.at(PwmTimer::ccr3), 0U);  // MTR_PWMA, TIM1_CH3
+  EXPECT_EQ(tim1.at(PwmTimer::ccr4), 0U);  // MTR_PWMB, TIM1_CH4
+  EXPECT_EQ(tim1.at(PwmTimer::bdtr) & PwmTimer::main_output_enable, 0U);
+}
+
+TEST_F(SafeStateTest, APinNumberBeyondThePortIsSkipped) {
+  const std::array pins{SafePin{port_a.base(), 16, false}};
+  set_safe_state({pins, {}});
+  enter_safe_state();
+  expect_untouched_but(port_a, {});
+}
+
+TEST_F(SafeStateTest, WithoutASafeStateNothingIsWritten) {
+  enter_safe_state();  // the default: empty tables
+  expect_untouched_but(port_a, {});
+  expect_untouched_but(tim1, {});
+}
+
+TEST(FaultStatusTest, TheFourRegistersAreReadAtTheirOffsets) {
+  std::array<std::uint32_t, 5> scb{0x0000'8200, 0x4000'0000, 0x0000'0002, 0x2000'0000, 0xDEAD'BEEF};  // DFSR between
+  const FaultStatus status = read_fault_status(reinterpret_cast<std::uintptr_t>(scb.data()));
+  EXPECT_EQ(status.cfsr, 0x0000'8200U);
+  EXPECT_EQ(status.hfsr, 0x4000'0000U);
+  EXPECT_EQ(status.mmfar, 0x2000'0000U);
+  EXPECT_EQ(status.bfar, 0xDEAD'BEEFU);
+}
+
+class FaultRecordTest : public ::testing::Test {
+ protected:
+  // A precise bus fault at a bad address, escalated to HardFault (CFSR.PRECISERR | BFARVALID, HFSR.FORCED).
+  static constexpr FaultStatus bus_fault{0x0000'8200, 0x4000'0000, 0x0000'0000, 0x6000'0000};
+  static constexpr ExceptionFrame frame{1, 2, 3, 4, 12, 0x1000'0123, 0x1000'0456, 0x2100'0000};
+
+  // Power-on contents: anything.
+  FaultRecord record{0x1234'5678, 77, 3, 1, 2, 3, 4, 5, 6, 7};
+};
+
+TEST_F(FaultRecordTest, TheRecordHoldsTheFrameAndStatus) {
+  record_fault(record, 3, bus_fault, &frame);
+  EXPECT_EQ(record.magic, FaultRecord::unreported);
+  EXPECT_EQ(record.count, 1U);  // garbage before: the first fault
+  EXPECT_EQ(record.exception, 3U);
+  EXPECT_EQ(record.cfsr, 0x0000'8200U);
+  EXPECT_EQ(record.hfsr, 0x4000'0000U);
+  EXPECT_EQ(record.mmfar, 0U);
+  EXPECT_EQ(record.bfar, 0x6000'0000U);
+  EXPECT_EQ(record.pc, 0x1000'0456U);
+  EXPECT_EQ(record.lr, 0x1000'0123U);
+  EXPECT_EQ(record.xpsr, 0x2100'0000U);
+}
+
+TEST_F(FaultRecordTest, TheNextStartTakesItOnce) {
+  record_fault(record, 5, bus_fault, &frame);
+  const std::optional<FaultRecord> fault = take_fault(record);
+  ASSERT_TRUE(fault.has_value());
+  EXPECT_EQ(fault->exception, 5U);
+  EXPECT_EQ(fault->pc, 0x1000'0456U);
+  EXPECT_EQ(fault->count, 1U);
+  EXPECT_EQ(record.magic, FaultRecord::reported);
+  EXPECT_FALSE(take_fault(record).has_value());
+}
+
+TEST_F(FaultRecordTest, TheCountGoesOnAcrossStarts) {
+  record_fault(record, 3, bus_fault, &frame);
+  ASSERT_TRUE(take_fault(record).has_value());
+  record_fault(record, 6, bus_fault, &frame);
+  record_fault(record, 4, bus_fault, &frame);  // before the next start took the one before: the last one is kept
+  const std::optional<FaultRecord> fault = take_fault(record);
+  ASSERT_TRUE(fault.has_value());
+  EXPECT_EQ(fault->count, 3U);
+  EXPECT_EQ(fault->exception, 4U);
+}
+
+TEST_F(FaultRecordTest, ARecordWithABadMagicIsIgnoredAndStartsTheCount) {
+  EXPECT_FALSE(take_fault(record).has_value());
+  EXPECT_EQ(record.magic, FaultRecord::reported);
+  EXPECT_EQ(record.count, 0U);
+  EXPECT_FALSE(take_fault(record).has_value());
+  record_fault(record, 3, bus_fault, &frame);
+  EXPECT_EQ(record.count, 1U);
+}
+
+TEST_F(FaultRecordTest, AFrameWhoseStackingFailedIsNotRead) {
+  const FaultStatus stacking_error{1U << 12, 0x4000'0000, 0, 0};  // CFSR.STKERR
+  record_fault(record, 3, stacking_error, nullptr);
+  EXPECT_EQ(record.magic, FaultRecord::unreported);
+  EXPECT_EQ(record.cfsr, 1U << 12);
+  EXPECT_EQ(record.pc, 0U);
+  EXPECT_EQ(record.lr, 0U);
+  EXPECT_EQ(record.xpsr, 0U);
+}
+
+}  // namespace
+}  // namespace duet::stm32mp15
