@@ -22,12 +22,12 @@ class TimerTest : public ::testing::Test {
   std::uintptr_t base() { return reinterpret_cast<std::uintptr_t>(registers.data()); }
 
   // TIM1 as the robot's firmware sets it up: PWM on channels 3 and 4, the compare interrupt on channel 1.
-  void start_motor_pwm(const Timer& tim1) {
-    ASSERT_TRUE(tim1.configure_pwm(pwm_period_ns, mcu_clock_hz));
-    ASSERT_TRUE(tim1.enable_pwm_output(3, 40.0F));
-    ASSERT_TRUE(tim1.enable_pwm_output(4, 60.0F));
-    ASSERT_TRUE(tim1.enable_compare_interrupt(1, 10.0F));
-    tim1.start();
+  void start_motor_pwm(const Timer& timer) {
+    ASSERT_TRUE(timer.configure_pwm(pwm_period_ns, mcu_clock_hz));
+    ASSERT_TRUE(timer.enable_pwm_output(3, 40.0F));
+    ASSERT_TRUE(timer.enable_pwm_output(4, 60.0F));
+    ASSERT_TRUE(timer.enable_compare_interrupt(1, 10.0F));
+    timer.start();
   }
 
   std::array<std::uint32_t, 0x50 / 4> registers{};
