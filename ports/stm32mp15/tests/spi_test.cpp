@@ -27,8 +27,7 @@ class SpiTest : public ::testing::Test {
   std::uint32_t& reg(std::uint32_t offset) { return spi_registers[offset / 4]; }
   std::uint32_t& stream_reg(unsigned stream, std::uint32_t offset) { return dma[(offset + 0x18 * stream) / 4]; }
   DmaStream stream(unsigned n) {
-    return DmaStream{reinterpret_cast<std::uintptr_t>(dma.data()), n,
-                     reinterpret_cast<std::uintptr_t>(&dmamux[8 + n])};
+    return DmaStream{reinterpret_cast<std::uintptr_t>(dma.data()), n, reinterpret_cast<std::uintptr_t>(&dmamux[8 + n])};
   }
   std::uintptr_t spi_base() { return reinterpret_cast<std::uintptr_t>(spi_registers.data()); }
   // Memory at a DMA address: the M4's 32-bit addresses are the low half of the PC's.
@@ -71,14 +70,14 @@ TEST_F(SpiTest, StartsAMode3MasterOnBothStreams) {
   stream_reg(receive_stream, stream_cr) = 0x415;
   stream_reg(transmit_stream, stream_cr) = 0x455;
   start_at_pclk2();
-  EXPECT_EQ(reg(Spi::cr1), 0x1000U);       // SSI, SPE off
-  EXPECT_EQ(reg(Spi::ifcr), 0xFF8U);       // every flag cleared
+  EXPECT_EQ(reg(Spi::cr1), 0x1000U);        // SSI, SPE off
+  EXPECT_EQ(reg(Spi::ifcr), 0xFF8U);        // every flag cleared
   EXPECT_EQ(reg(Spi::cfg1), 0x6007'0007U);  // MBR = 6 (/128), CRCSIZE at reset, 8-bit frames, FTHLV = 0
   EXPECT_EQ(reg(Spi::cfg2), 0x8740'0000U);  // AFCNTR, SSM, CPOL, CPHA, MASTER; SSOE off, full duplex, Motorola
   EXPECT_EQ(stream_reg(transmit_stream, stream_cr), 0x454U);  // memory to peripheral, bytes, MINC, TCIE, TEIE
   EXPECT_EQ(stream_reg(transmit_stream, par), static_cast<std::uint32_t>(spi_base() + 0x20));  // TXDR
-  EXPECT_EQ(stream_reg(receive_stream, stream_cr), 0x414U);  // peripheral to memory
-  EXPECT_EQ(stream_reg(receive_stream, par), static_cast<std::uint32_t>(spi_base() + 0x30));  // RXDR
+  EXPECT_EQ(stream_reg(receive_stream, stream_cr), 0x414U);                                    // peripheral to memory
+  EXPECT_EQ(stream_reg(receive_stream, par), static_cast<std::uint32_t>(spi_base() + 0x30));   // RXDR
   EXPECT_EQ(dmamux[8 + transmit_stream], 86U);
   EXPECT_EQ(dmamux[8 + receive_stream], 85U);
   // Both buffers inside the driver, apart.
@@ -100,7 +99,7 @@ TEST_F(SpiTest, RefusesAKernelClockNoDividerBringsDown) {
 TEST_F(SpiTest, SensorReadInTheManualsOrderAndItsEnd) {
   start_at_pclk2();
   ASSERT_TRUE(spi.transfer(sensor_read));
-  EXPECT_EQ(reg(Spi::cr2), 15U);                   // TSIZE
+  EXPECT_EQ(reg(Spi::cr2), 15U);                      // TSIZE
   EXPECT_EQ(reg(Spi::cfg1), 0x6007'0007U | 0xC000U);  // RXDMAEN, TXDMAEN
   EXPECT_EQ(stream_reg(receive_stream, ndtr), 15U);
   EXPECT_EQ(stream_reg(receive_stream, stream_cr), 0x415U);
@@ -110,7 +109,8 @@ TEST_F(SpiTest, SensorReadInTheManualsOrderAndItsEnd) {
   EXPECT_EQ(reg(Spi::cr1), 0x1201U);       // SSI, SPE, CSTART
   EXPECT_TRUE(spi.busy());
   const std::uint8_t* sent = memory_at(stream_reg(transmit_stream, m0ar));
-  EXPECT_EQ(std::vector<std::uint8_t>(sent, sent + 15), std::vector<std::uint8_t>(sensor_read.begin(), sensor_read.end()));
+  EXPECT_EQ(std::vector<std::uint8_t>(sent, sent + 15),
+            std::vector<std::uint8_t>(sensor_read.begin(), sensor_read.end()));
 
   std::array<std::uint8_t, 15> answer{};
   for (std::size_t i = 0; i < answer.size(); ++i) answer[i] = static_cast<std::uint8_t>(0xF0 + i);
@@ -119,12 +119,13 @@ TEST_F(SpiTest, SensorReadInTheManualsOrderAndItsEnd) {
   EXPECT_TRUE(received.complete);
   EXPECT_FALSE(received.error);
   EXPECT_EQ(dma[lifcr / 4], receive_complete);  // the transmit stream's flag is its own handler's
-  EXPECT_EQ(reg(Spi::ifcr), 0x258U);           // EOTC, TXTFC, OVRC, MODFC
-  EXPECT_EQ(reg(Spi::cr1), 0x1000U);           // SPE off: the next transfer can be programmed
-  EXPECT_EQ(reg(Spi::cfg1), 0x6007'0007U);     // DMA requests off
+  EXPECT_EQ(reg(Spi::ifcr), 0x258U);            // EOTC, TXTFC, OVRC, MODFC
+  EXPECT_EQ(reg(Spi::cr1), 0x1000U);            // SPE off: the next transfer can be programmed
+  EXPECT_EQ(reg(Spi::cfg1), 0x6007'0007U);      // DMA requests off
   EXPECT_FALSE(spi.busy());
   const std::span<const std::uint8_t> bytes = spi.received();
-  EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.end()), std::vector<std::uint8_t>(answer.begin(), answer.end()));
+  EXPECT_EQ(std::vector<std::uint8_t>(bytes.begin(), bytes.end()),
+            std::vector<std::uint8_t>(answer.begin(), answer.end()));
 
   dma[lifcr / 4] = 0;
   const DmaFlags transmitted = spi.on_transmit_interrupt();
@@ -151,12 +152,17 @@ TEST_F(SpiTest, RefusesWhileATransferRunsAndSizesItCannotTake) {
   start_at_pclk2();
   ASSERT_TRUE(spi.transfer(sensor_read));
   const std::array<std::uint8_t, 2> who_am_i{0x75 | 0x80, 0};
-  expect_refused(who_am_i);  // SPE still set: the receive stream's interrupt has not ended the transfer
-  reg(Spi::cr1) = 0x1000;
-  expect_refused(who_am_i);  // both streams still enabled
+  expect_refused(who_am_i);  // running
   stream_reg(transmit_stream, stream_cr) &= ~1U;
-  expect_refused(who_am_i);  // the receive stream still enabled
   stream_reg(receive_stream, stream_cr) &= ~1U;
+  expect_refused(who_am_i);  // the streams are done, but SPE stays set until the receive interrupt ends it
+  reg(Spi::cr1) = 0x1000;
+  stream_reg(receive_stream, stream_cr) |= 1U;
+  expect_refused(who_am_i);  // the receive stream still stopping (after an error)
+  stream_reg(receive_stream, stream_cr) &= ~1U;
+  stream_reg(transmit_stream, stream_cr) |= 1U;
+  expect_refused(who_am_i);  // the transmit stream still stopping
+  stream_reg(transmit_stream, stream_cr) &= ~1U;
   const std::array<std::uint8_t, 33> too_long{};
   expect_refused(too_long);
   expect_refused({});
