@@ -73,7 +73,7 @@ constexpr std::array safe_pins{
     chip::SafePin{gpio_of(hardware::pin("PE10")), hardware::pin("PE10").number, false},  // MTRR_P
     chip::SafePin{gpio_of(hardware::pin("PD14")), hardware::pin("PD14").number, false},  // MTRR_N
 };
-constexpr std::array safe_timers{chip::PwmTimer{chip::tim1_base, true}};
+constexpr std::array safe_timers{pwm_timer};
 
 // What the capture handlers took, as the model reads it: [count, edge] (1 rising, 0 falling).
 struct CaptureReading {

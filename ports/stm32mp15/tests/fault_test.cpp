@@ -1,5 +1,5 @@
-// The fault path on the PC: the safe state against fake GPIO and timer register files (one BSRR store per pin, every
-// compare register 0, MOE off on advanced timers only, nothing else touched), and the fault record filled from a fake
+// The fault path on the PC: the safe state against fake GPIO and timer register files (one BSRR store per pin, the
+// PWM channels' compare registers 0 and loaded at once, MOE off on advanced timers only, nothing else touched), and the fault record filled from a fake
 // frame and fault status, taken once at the next start, garbage ignored.
 #include "duet/stm32mp15/fault.hpp"
 
@@ -27,7 +27,7 @@ struct FakeRegisters {
 };
 
 using FakePort = FakeRegisters<10>;                       // GPIO, up to AFRH
-using FakeTimer = FakeRegisters<PwmTimer::bdtr / 4 + 1>;  // up to BDTR
+using FakeTimer = FakeRegisters<Timer::bdtr / 4 + 1>;  // up to BDTR
 
 class SafeStateTest : public ::testing::Test {
  protected:
@@ -60,31 +60,42 @@ TEST_F(SafeStateTest, EachPinIsDrivenByOneBsrrStore) {
   expect_untouched_but(port_e, {GpioPort::bsrr});
 }
 
+// TIM1 as the robot sets it up: channels 3 and 4 PWM outputs, channel 1 a compare without a pin; TIM4 a capture.
+void set_up_like_the_robot(FakeTimer& tim1, FakeTimer& tim4) {
+  tim1.at(Timer::ccmr1) = 0;       // channel 1: frozen compare (CCxS = 00), its output off in CCER
+  tim1.at(Timer::ccmr2) = 0x6868;  // channels 3 and 4: PWM mode 1, preload
+  tim1.at(Timer::ccer) = 1U << 8 | 1U << 12;
+  tim1.at(Timer::bdtr) = Timer::main_output_enable | Timer::idle_off_state;
+  tim4.at(Timer::ccmr1) = 0;
+  tim4.at(Timer::ccmr2) = 0x0100;  // channel 4: input (CCxS = 01)
+  tim4.at(Timer::ccer) = 1U << 12;
+}
+
 TEST_F(SafeStateTest, PwmOutputsGoOffAndMoeOnlyOnAdvancedTimers) {
-  tim1.at(PwmTimer::bdtr) = PwmTimer::main_output_enable | 1U << 14 | 0x2A;  // MOE, AOE, a dead time
-  const std::array timers{PwmTimer{tim1.base(), true}, PwmTimer{tim4.base(), false}};
+  set_up_like_the_robot(tim1, tim4);
+  const std::array timers{Timer{tim1.base(), true}, Timer{tim4.base(), false}};
   set_safe_state({{}, timers});
   enter_safe_state();
-  for (const FakeTimer* timer : {&tim1, &tim4}) {
-    for (const std::uint32_t compare : PwmTimer::compare_registers) {
-      EXPECT_EQ(timer->words[compare / 4], 0U) << "offset " << compare;
-    }
-  }
-  EXPECT_EQ(tim1.at(PwmTimer::bdtr), 1U << 14 | 0x2A);  // MOE off, the rest kept
-  expect_untouched_but(tim1, {PwmTimer::ccr1, PwmTimer::ccr2, PwmTimer::ccr3, PwmTimer::ccr4, PwmTimer::bdtr});
-  expect_untouched_but(tim4, {PwmTimer::ccr1, PwmTimer::ccr2, PwmTimer::ccr3, PwmTimer::ccr4});
+  EXPECT_EQ(tim1.at(Timer::ccr1 + 8), 0U);  // CCR3
+  EXPECT_EQ(tim1.at(Timer::ccr1 + 12), 0U);  // CCR4
+  EXPECT_EQ(tim1.at(Timer::bdtr), Timer::idle_off_state);  // MOE off: the outputs to their idle level, low
+  EXPECT_EQ(tim1.at(Timer::egr), Timer::update_generation);  // the zeros loaded now, not at the period's end
+  expect_untouched_but(tim1, {Timer::ccmr1, Timer::ccmr2, Timer::ccer, Timer::ccr1 + 8, Timer::ccr1 + 12, Timer::bdtr,
+                              Timer::egr});
+  expect_untouched_but(tim4, {Timer::ccmr1, Timer::ccmr2, Timer::ccer, Timer::egr});  // a capture is no output
 }
 
 TEST_F(SafeStateTest, ThePinsAndTimersOfOneTableAllGoSafe) {
+  set_up_like_the_robot(tim1, tim4);
   const std::array pins{SafePin{port_a.base(), 12, false}, SafePin{port_d.base(), 1, false}};
-  const std::array timers{PwmTimer{tim1.base(), true}};
+  const std::array timers{Timer{tim1.base(), true}};
   set_safe_state({pins, timers});
   enter_safe_state();
   EXPECT_EQ(port_a.at(GpioPort::bsrr), 1U << 28);
   EXPECT_EQ(port_d.at(GpioPort::bsrr), 1U << 17);
-  EXPECT_EQ(tim1.at(PwmTimer::ccr3), 0U);  // MTR_PWMA, TIM1_CH3
-  EXPECT_EQ(tim1.at(PwmTimer::ccr4), 0U);  // MTR_PWMB, TIM1_CH4
-  EXPECT_EQ(tim1.at(PwmTimer::bdtr) & PwmTimer::main_output_enable, 0U);
+  EXPECT_EQ(tim1.at(Timer::ccr1 + 8), 0U);   // MTR_PWMA, TIM1_CH3
+  EXPECT_EQ(tim1.at(Timer::ccr1 + 12), 0U);  // MTR_PWMB, TIM1_CH4
+  EXPECT_EQ(tim1.at(Timer::bdtr) & Timer::main_output_enable, 0U);
 }
 
 TEST_F(SafeStateTest, APinNumberBeyondThePortIsSkipped) {

@@ -11,6 +11,7 @@
 
 #include "duet/cortex_m/registers.hpp"
 #include "duet/stm32mp15/gpio.hpp"
+#include "duet/stm32mp15/timer.hpp"
 
 namespace duet::stm32mp15 {
 
@@ -21,22 +22,10 @@ struct SafePin {
   bool level;
 };
 
-// A timer whose PWM outputs go off: its four compare registers to 0 and, on an advanced timer (TIM1, TIM8), the main
-// output enable off too. Only these registers (RM0436, TIM1/TIM8 and TIM2-TIM5 register maps), not the timer driver,
-// so that the fault path depends on nothing else.
-struct PwmTimer {
-  static constexpr std::uint32_t ccr1 = 0x34, ccr2 = 0x38, ccr3 = 0x3C, ccr4 = 0x40, bdtr = 0x44;
-  static constexpr std::array<std::uint32_t, 4> compare_registers{ccr1, ccr2, ccr3, ccr4};
-  static constexpr std::uint32_t main_output_enable = 1U << 15U;  // BDTR.MOE
-
-  std::uintptr_t base;
-  bool advanced;
-};
-
 // The board's safe state. The tables are kept, not copied: give arrays of static storage (constexpr tables).
 struct SafeState {
   std::span<const SafePin> pins;
-  std::span<const PwmTimer> timers;
+  std::span<const Timer> timers;  // their PWM outputs off (Timer::enter_safe_state)
 };
 
 namespace detail {
@@ -47,18 +36,15 @@ inline constinit SafeState safe_state{};
 inline void set_safe_state(const SafeState& state) { detail::safe_state = state; }
 
 // Puts every output of the safe state in its safe level: from the fault handlers and when Linux asks the M4 to shut
-// down. First the pins, one BSRR store each, which act at once; then each timer's MOE, which acts at once too, and its
-// compare registers, which with preload on act at the next update, within one PWM period. A loop over the tables
-// only, stores to their registers only: nothing that can fault again on a sane table. The caller keeps whatever
-// would drive the outputs again from running (the fault handlers mask interrupts).
+// down. First the pins, one BSRR store each, which act at once; then each timer's PWM outputs: MOE off at once on an
+// advanced timer, every PWM channel's compare value 0 loaded by an update event. A loop over the tables only,
+// accesses to their registers only: nothing that can fault again on a sane table. The caller keeps whatever would
+// drive the outputs again from running (the fault handlers mask interrupts).
 inline void enter_safe_state() {
   for (const SafePin& pin : detail::safe_state.pins) {
     if (pin.pin < 16) GpioPort{pin.port}.set(pin.pin, pin.level);  // a larger number names no pin of the port
   }
-  for (const PwmTimer& timer : detail::safe_state.timers) {
-    if (timer.advanced) cortex_m::modify32(timer.base + PwmTimer::bdtr, PwmTimer::main_output_enable, 0);
-    for (const std::uint32_t compare : PwmTimer::compare_registers) cortex_m::register32(timer.base + compare) = 0;
-  }
+  for (const Timer& timer : detail::safe_state.timers) timer.enter_safe_state();
 }
 
 // The basic frame the core stacks on exception entry (ARMv7-M B1.5.6), where the stack pointer in use then points.
