@@ -1,5 +1,6 @@
 #include "duet/stm32mp15/linux_link.hpp"
 
+#include <atomic>
 #include <bit>
 
 namespace duet::stm32mp15 {
@@ -45,8 +46,8 @@ bool LinuxLink::try_start() {
   configuration_.ipcc.start(1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown |
                             1U << ipcc_channel::detach);
   problem_ = LinkProblem::none;
+  std::atomic_signal_fence(std::memory_order_release);  // the rings are set up before serve() may use them
   started_ = true;
-  serve();  // announces, and takes whatever Linux sent already
   return true;
 }
 

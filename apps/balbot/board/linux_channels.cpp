@@ -49,6 +49,7 @@ void prepare_linux_channels() {
 bool poll_linux() {
   if (link.started()) return true;
   if (!link.try_start()) return false;
+  cortex_m::set_interrupt_pending(chip::interrupt::ipcc_rx1);  // serve() announces the channels there, not here
   cortex_m::console_write("linux link: up, XCP on ttyRPMSG0, application channel on ttyRPMSG1\n");
   return true;
 }

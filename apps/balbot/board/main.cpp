@@ -44,6 +44,7 @@ firmware::AccountPublisher account{model};
 std::uint64_t next_account_tick = 0;
 
 void RobotPort::idle() {
+  (void)firmware::microseconds();  // at least once per wrap of the cycle counter (20.5 s), DAQ or not
   if (poll_linux() && executive.ticks() >= next_account_tick) {
     next_account_tick = executive.ticks() + 1'000'000'000U / model.base_period_ns;  // every second of model time
     account.publish(executive, chip::core_clock_hz);

@@ -155,6 +155,8 @@ void start_imu_transfer(std::span<const double> values) {
   std::array<std::uint8_t, imu_transfer_capacity> bytes{};
   const std::size_t count = values.size() < bytes.size() ? values.size() : bytes.size();
   for (std::size_t k = 0; k < count; ++k) bytes[k] = static_cast<std::uint8_t>(values[k]);
+  // Masked: a task of another priority may start one too, and must see this one whole or not at all.
+  const duet::cortex_m::InterruptMask masked;
   if (count == 0 || imu_bus.busy()) return;
   imu_read_transfer = (bytes[0] & mpu6500_read) != 0;
   hardware::gpio_write(imu_chip_select, false);

@@ -39,7 +39,8 @@ class LinuxLink {
   explicit LinuxLink(const LinuxLinkConfiguration& configuration);
 
   // From the background loop until it returns true: once Linux's driver has set DRIVER_OK, takes the vrings where
-  // the table says, starts the IPCC and announces both channels. Never waits.
+  // the table says and starts the IPCC. Never waits. Then serve() announces both channels: the caller pends its
+  // interrupt, so that serve() never runs twice at once.
   bool try_start();
   [[nodiscard]] bool started() const { return started_; }
   [[nodiscard]] LinkProblem problem() const { return problem_; }
@@ -59,7 +60,7 @@ class LinuxLink {
   rpmsg::DeviceVring receive_;
   rpmsg::Endpoint endpoints_[2];
   rpmsg::Device device_;
-  bool started_ = false;
+  volatile bool started_ = false;  // the background loop sets it, the doorbell's handler reads it
   bool announced_ = false;
   LinkProblem problem_ = LinkProblem::waiting_for_linux;
   std::uint32_t shutdown_requests_ = 0;
