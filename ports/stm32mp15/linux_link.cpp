@@ -11,8 +11,8 @@ const LinuxLinkConfiguration* doorbells = nullptr;  // the link's, for Device's 
 // A ring as Linux described it: where it put it, and a size and alignment our vring code can take.
 bool usable(const volatile VringResource& ring) {
   const std::uint32_t entries = ring.entries;
-  return ring.device_address != address_any && entries != 0 && entries <= 0x8000 &&
-         std::has_single_bit(entries) && std::has_single_bit(static_cast<std::uint32_t>(ring.align));
+  return ring.device_address != address_any && entries != 0 && entries <= 0x8000 && std::has_single_bit(entries) &&
+         std::has_single_bit(static_cast<std::uint32_t>(ring.align));
 }
 
 }  // namespace

@@ -16,16 +16,12 @@ void ByteChannel::pump(Device& device, Endpoint& endpoint) {
     }
     const auto message = std::span<const std::uint8_t>{message_.data(), held_};
     switch (device.send(endpoint, message)) {
-      case SendResult::sent:
-        bytes_sent_ += static_cast<std::uint32_t>(held_);
-        break;
+      case SendResult::sent: bytes_sent_ += static_cast<std::uint32_t>(held_); break;
       case SendResult::no_remote_yet:
       case SendResult::too_long:  // cannot happen: message_ holds one payload at most
         bytes_dropped_ += static_cast<std::uint32_t>(held_);
         break;
-      case SendResult::no_buffer:
-        ++waits_;
-        return;
+      case SendResult::no_buffer: ++waits_; return;
     }
     held_ = 0;
   }

@@ -33,8 +33,8 @@ std::uint8_t* linux_memory(std::uint64_t address) {
   return reinterpret_cast<std::uint8_t*>(static_cast<std::uintptr_t>(address));
 }
 
-chip::LinuxLink link{{&chip::resource_table, chip::Ipcc{}, linux_memory, &xcp_channel, &application_channel,
-                      chip::enter_safe_state}};
+chip::LinuxLink link{
+    {&chip::resource_table, chip::Ipcc{}, linux_memory, &xcp_channel, &application_channel, chip::enter_safe_state}};
 
 cortex_m::MicrosecondClock<chip::core_clock_hz> clock;
 

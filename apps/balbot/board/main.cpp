@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string_view>
 
+#include "account_publisher.hpp"
 #include "balbot.hpp"
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
@@ -16,7 +17,6 @@
 #include "duet/stm32mp15/board.hpp"
 #include "duet/stm32mp15/executive_port.hpp"
 #include "duet/stm32mp15/fault.hpp"
-#include "account_publisher.hpp"
 #include "linux_channels.hpp"
 #include "robot_channels.hpp"
 #include "robot_peripherals.hpp"
@@ -104,9 +104,7 @@ extern "C" void TIM2_IRQHandler() { run_if(balbot::board::on_left_hall(), balbot
 extern "C" void TIM4_IRQHandler() { run_if(balbot::board::on_right_hall(), balbot::board::right_hall_task); }
 extern "C" void TIM5_IRQHandler() { run_if(balbot::board::on_echo_edge(), balbot::board::echo_task); }
 extern "C" void EXTI8_IRQHandler() { run_if(balbot::board::on_imu_data_ready(), balbot::board::imu_task); }
-extern "C" void DMA2_Stream3_IRQHandler() {
-  run_if(balbot::board::on_spi_transmitted(), balbot::board::spi_sent_task);
-}
+extern "C" void DMA2_Stream3_IRQHandler() { run_if(balbot::board::on_spi_transmitted(), balbot::board::spi_sent_task); }
 extern "C" void DMA2_Stream2_IRQHandler() {
   run_if(balbot::board::on_spi_received(), balbot::board::spi_received_task);
 }

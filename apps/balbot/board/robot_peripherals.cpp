@@ -32,8 +32,8 @@ namespace {
 namespace chip = duet::stm32mp15;
 namespace hardware = duet::hardware;
 
-constexpr std::uint64_t pwm_period_ns = 500'000;      // 2 kHz: the thesis' task 4, every 500 us
-constexpr float pwm_task_at_percent = 50.0F;          // where in the period the "TIM1" task runs (eq. 5.1)
+constexpr std::uint64_t pwm_period_ns = 500'000;  // 2 kHz: the thesis' task 4, every 500 us
+constexpr float pwm_task_at_percent = 50.0F;      // where in the period the "TIM1" task runs (eq. 5.1)
 constexpr std::uint32_t capture_counter_hz = 1'000'000;
 
 constexpr chip::Timer pwm_timer{chip::tim1_base, true};
@@ -102,9 +102,9 @@ void read_capture(const CaptureReading& reading, std::span<double> values) {
 void start_clocks() {
   const chip::Rcc rcc;
   for (const unsigned port : {0U, 3U, 4U, 5U, 6U, 7U}) rcc.enable(chip::clock::gpio(port));  // A, D-H
-  for (const chip::PeripheralClock clock : {chip::clock::tim1, chip::clock::tim2, chip::clock::tim4, chip::clock::tim5,
-                                            chip::clock::spi5, chip::clock::dma2, chip::clock::dmamux,
-                                            chip::clock::adc12}) {
+  for (const chip::PeripheralClock clock :
+       {chip::clock::tim1, chip::clock::tim2, chip::clock::tim4, chip::clock::tim5, chip::clock::spi5,
+        chip::clock::dma2, chip::clock::dmamux, chip::clock::adc12}) {
     rcc.enable(clock);
   }
 }
@@ -114,8 +114,8 @@ void start_clocks() {
 void start_pins() {
   using hardware::pin;
   // Outputs, low first (the motor driver in standby, TRIG and FSYNC idle), then the IMU's chip select high (idle).
-  constexpr std::array outputs{pin("PA12"), pin("PE9"), pin("PD1"), pin("PE10"), pin("PD14"),
-                               pin("PE11"), pin("PE1"), pin("PE7")};
+  constexpr std::array outputs{pin("PA12"), pin("PE9"),  pin("PD1"), pin("PE10"),
+                               pin("PD14"), pin("PE11"), pin("PE1"), pin("PE7")};
   for (const hardware::Pin output : outputs) {
     hardware::gpio_write(output, false);
     chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number);
@@ -147,7 +147,9 @@ void unknown_resource(std::string_view resource) {
 }
 
 bool start_imu_bus() { return imu_bus.start(chip::spi5_kernel_clock_hz, imu_clock_hz); }
-bool start_battery_adc() { return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz); }
+bool start_battery_adc() {
+  return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz);
+}
 
 // The model's SpiDma block: one transaction, chip select low for its length. A transfer still running refuses the
 // new one (HAL_BUSY in the thesis; the simulated robot refuses it too).

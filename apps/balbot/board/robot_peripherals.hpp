@@ -14,13 +14,13 @@ bool start_peripherals();
 
 // The interrupt tasks' handlers, before the model's task: each clears its peripheral's flag and keeps what the
 // model reads. False: the interrupt was not the model's event (a stale or foreign flag), and the task should not run.
-bool on_pwm_period();          // TIM1_CC: the once-per-period compare on channel 1
-bool on_left_hall();           // TIM2: a capture on channel 1
-bool on_right_hall();          // TIM4: a capture on channel 4
-bool on_echo_edge();           // TIM5: a capture on channel 2, either edge
-bool on_imu_data_ready();      // EXTI8
-bool on_spi_transmitted();     // DMA2 stream 3
-bool on_spi_received();        // DMA2 stream 2
-bool on_adc_samples();         // DMA2 stream 4
+bool on_pwm_period();       // TIM1_CC: the once-per-period compare on channel 1
+bool on_left_hall();        // TIM2: a capture on channel 1
+bool on_right_hall();       // TIM4: a capture on channel 4
+bool on_echo_edge();        // TIM5: a capture on channel 2, either edge
+bool on_imu_data_ready();   // EXTI8
+bool on_spi_transmitted();  // DMA2 stream 3
+bool on_spi_received();     // DMA2 stream 2
+bool on_adc_samples();      // DMA2 stream 4
 
 }  // namespace balbot::board

@@ -116,7 +116,8 @@ void on_task_finished(std::size_t task) {
 }
 
 void publish_executive(const app_channel::ExecutiveReport& report) {
-  (void)endpoint.publish_executive(report);  // a full queue loses this second's account, counted nowhere: the next comes
+  (void)endpoint.publish_executive(
+      report);  // a full queue loses this second's account, counted nowhere: the next comes
   kick_application();
 }
 

@@ -15,10 +15,10 @@
 namespace balbot::firmware {
 
 // Supplied by the board.
-void kick_xcp();                // XCP has queued bytes: pend the interrupt that sends them
-void kick_application();        // so has the application channel
-std::uint32_t microseconds();   // DAQ timestamps, in the A2L's unit; interrupt-safe
-void pend_gains_task();         // the model's IPCC_RX1 task: new gains came from Linux
+void kick_xcp();               // XCP has queued bytes: pend the interrupt that sends them
+void kick_application();       // so has the application channel
+std::uint32_t microseconds();  // DAQ timestamps, in the A2L's unit; interrupt-safe
+void pend_gains_task();        // the model's IPCC_RX1 task: new gains came from Linux
 
 // For the board's lines: the protocols whose bytes they carry.
 duet::xcp::StreamTransport& xcp_transport();

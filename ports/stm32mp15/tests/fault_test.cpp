@@ -1,6 +1,6 @@
 // The fault path on the PC: the safe state against fake GPIO and timer register files (one BSRR store per pin, the
-// PWM channels' compare registers 0 and loaded at once, MOE off on advanced timers only, nothing else touched), and the fault record filled from a fake
-// frame and fault status, taken once at the next start, garbage ignored.
+// PWM channels' compare registers 0 and loaded at once, MOE off on advanced timers only, nothing else touched), and the
+// fault record filled from a fake frame and fault status, taken once at the next start, garbage ignored.
 #include "duet/stm32mp15/fault.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +26,7 @@ struct FakeRegisters {
   std::array<std::uint32_t, Words> words;
 };
 
-using FakePort = FakeRegisters<10>;                       // GPIO, up to AFRH
+using FakePort = FakeRegisters<10>;                    // GPIO, up to AFRH
 using FakeTimer = FakeRegisters<Timer::bdtr / 4 + 1>;  // up to BDTR
 
 class SafeStateTest : public ::testing::Test {
@@ -76,12 +76,12 @@ TEST_F(SafeStateTest, PwmOutputsGoOffAndMoeOnlyOnAdvancedTimers) {
   const std::array timers{Timer{tim1.base(), true}, Timer{tim4.base(), false}};
   set_safe_state({{}, timers});
   enter_safe_state();
-  EXPECT_EQ(tim1.at(Timer::ccr1 + 8), 0U);  // CCR3
-  EXPECT_EQ(tim1.at(Timer::ccr1 + 12), 0U);  // CCR4
-  EXPECT_EQ(tim1.at(Timer::bdtr), Timer::idle_off_state);  // MOE off: the outputs to their idle level, low
+  EXPECT_EQ(tim1.at(Timer::ccr1 + 8), 0U);                   // CCR3
+  EXPECT_EQ(tim1.at(Timer::ccr1 + 12), 0U);                  // CCR4
+  EXPECT_EQ(tim1.at(Timer::bdtr), Timer::idle_off_state);    // MOE off: the outputs to their idle level, low
   EXPECT_EQ(tim1.at(Timer::egr), Timer::update_generation);  // the zeros loaded now, not at the period's end
-  expect_untouched_but(tim1, {Timer::ccmr1, Timer::ccmr2, Timer::ccer, Timer::ccr1 + 8, Timer::ccr1 + 12, Timer::bdtr,
-                              Timer::egr});
+  expect_untouched_but(
+      tim1, {Timer::ccmr1, Timer::ccmr2, Timer::ccer, Timer::ccr1 + 8, Timer::ccr1 + 12, Timer::bdtr, Timer::egr});
   expect_untouched_but(tim4, {Timer::ccmr1, Timer::ccmr2, Timer::ccer, Timer::egr});  // a capture is no output
 }
 

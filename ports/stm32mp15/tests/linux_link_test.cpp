@@ -98,8 +98,8 @@ TEST_F(LinuxLinkTest, CarriesBytesBothWaysOnEachChannel) {
   ASSERT_TRUE(link.try_start());
   link.serve();  // the doorbell's interrupt, which the board pends once the link is up
   linux_side.receive();
-  ASSERT_TRUE(linux_side.send(0x500, LinuxLink::xcp_address, {0xFF, 0x00}));           // CONNECT
-  ASSERT_TRUE(linux_side.send(0x501, LinuxLink::application_address, {0x81}));         // describe
+  ASSERT_TRUE(linux_side.send(0x500, LinuxLink::xcp_address, {0xFF, 0x00}));    // CONNECT
+  ASSERT_TRUE(linux_side.send(0x501, LinuxLink::application_address, {0x81}));  // describe
   ring(ipcc_channel::vring1);
   link.serve();
   EXPECT_EQ(xcp.received, (std::vector<std::uint8_t>{0xFF, 0x00}));

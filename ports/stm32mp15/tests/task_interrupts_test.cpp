@@ -17,7 +17,8 @@ void nothing() {}
 
 constexpr std::array tasks{
     rt::Task{.name = "rate 1", .kind = rt::TaskKind::periodic, .period_ticks = 1, .priority = {5, 1}, .entry = nothing},
-    rt::Task{.name = "rate 10", .kind = rt::TaskKind::periodic, .period_ticks = 10, .priority = {6, 0}, .entry = nothing},
+    rt::Task{
+        .name = "rate 10", .kind = rt::TaskKind::periodic, .period_ticks = 10, .priority = {6, 0}, .entry = nothing},
     rt::Task{.name = "EXTI8",
              .kind = rt::TaskKind::interrupt,
              .interrupt = board::interrupt::exti8,

@@ -56,10 +56,10 @@ class ExecutivePort {
 // Defines the handlers that connect `executive` (an Executive<ExecutivePort, N> with static storage) to TIM7 and to
 // the lines of the slower rates. Interrupt tasks' handlers are the application's: each clears its peripheral's flag
 // and calls executive.on_interrupt_task(index).
-#define DUET_STM32MP15_EXECUTIVE_HANDLERS(executive)                                      \
-  extern "C" void TIM7_IRQHandler() {                                                     \
-    ::duet::stm32mp15::ExecutivePort::acknowledge_base_tick();                            \
-    (executive).on_base_tick();                                                           \
-  }                                                                                       \
-  extern "C" void Software0_IRQHandler() { (executive).on_rate_interrupt(1); }             \
+#define DUET_STM32MP15_EXECUTIVE_HANDLERS(executive)                           \
+  extern "C" void TIM7_IRQHandler() {                                          \
+    ::duet::stm32mp15::ExecutivePort::acknowledge_base_tick();                 \
+    (executive).on_base_tick();                                                \
+  }                                                                            \
+  extern "C" void Software0_IRQHandler() { (executive).on_rate_interrupt(1); } \
   extern "C" void Software1_IRQHandler() { (executive).on_rate_interrupt(2); }
