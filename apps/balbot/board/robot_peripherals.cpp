@@ -57,9 +57,10 @@ chip::SpiMaster<imu_transfer_capacity> imu_bus{
     chip::DmaStream{chip::dma2_base, 2, chip::dma2_request_line(2)}, chip::dma_request::spi5_rx};
 bool imu_read_transfer = false;  // whether the transfer under way reads (its receive-complete task runs)
 
-// The battery on ADC1 channel 6, DMA2 stream 4.
+// The battery on ADC1 channel 6, DMA2 stream 4; the model asks for 100 samples at a time.
 constexpr unsigned battery_channel = 6;
-chip::AdcSampler<1024> battery_adc{chip::adc1_base, chip::adc12_common_base,
+constexpr std::size_t battery_sample_capacity = 128;
+chip::AdcSampler<battery_sample_capacity> battery_adc{chip::adc1_base, chip::adc12_common_base,
                                    chip::DmaStream{chip::dma2_base, 4, chip::dma2_request_line(4)},
                                    chip::dma_request::adc1};
 constexpr hardware::Pin imu_chip_select = hardware::pin("PE7");
@@ -172,7 +173,7 @@ void read_imu_bytes(std::span<double> values) {
 
 // The model's AdcStart block: `count` conversions, ignored while a sequence runs (as the simulated robot does).
 void start_battery_samples(double count) {
-  if (!(count >= 1.0 && count <= 1024.0)) return;
+  if (!(count >= 1.0 && count <= static_cast<double>(battery_sample_capacity))) return;
   (void)battery_adc.start(static_cast<std::uint32_t>(count));
 }
 

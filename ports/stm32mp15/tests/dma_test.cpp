@@ -18,8 +18,7 @@ class DmaTest : public ::testing::Test {
   std::uint32_t& reg(std::uint32_t offset) { return dma[offset / 4]; }
   std::uint32_t& stream_reg(unsigned stream, std::uint32_t offset) { return reg(offset + 0x18 * stream); }
   DmaStream stream(unsigned n) {
-    return DmaStream{reinterpret_cast<std::uintptr_t>(dma.data()), n,
-                     reinterpret_cast<std::uintptr_t>(&dmamux[8 + n])};
+    return DmaStream{reinterpret_cast<std::uintptr_t>(dma.data()), n, reinterpret_cast<std::uintptr_t>(&dmamux[8 + n])};
   }
   std::array<std::uint32_t, 0xD0 / 4> dma{};
   std::array<std::uint32_t, 16> dmamux{};
@@ -46,8 +45,8 @@ TEST_F(DmaTest, TransmitStreamOfBytesFromMemory) {
                                    .request = dma_request::spi5_tx}));
   EXPECT_EQ(stream_reg(3, par), 0x4400'9020U);
   EXPECT_EQ(stream_reg(3, m0ar), static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(buffer.data())));
-  EXPECT_EQ(dmamux[11], 86U);  // DMAREQ_ID alone: no synchronisation, no events
-  EXPECT_EQ(stream_reg(3, fcr), 0U);  // direct mode
+  EXPECT_EQ(dmamux[11], 86U);            // DMAREQ_ID alone: no synchronisation, no events
+  EXPECT_EQ(stream_reg(3, fcr), 0U);     // direct mode
   EXPECT_EQ(stream_reg(3, cr), 0x454U);  // DIR = 01, MINC, byte sizes, TCIE, TEIE; not enabled
   EXPECT_EQ(stream_reg(2, cr), 0U);
   EXPECT_EQ(dmamux[10], 0U);

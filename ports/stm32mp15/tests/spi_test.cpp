@@ -89,6 +89,16 @@ TEST_F(SpiTest, StartsAMode3MasterOnBothStreams) {
   EXPECT_GE(stream_reg(receive_stream, m0ar), stream_reg(transmit_stream, m0ar) + 32);
 }
 
+TEST_F(SpiTest, StartingAgainEndsATransferLeftRunning) {
+  start_at_pclk2();
+  ASSERT_TRUE(spi.transfer(sensor_read));
+  start_at_pclk2();
+  EXPECT_EQ(reg(Spi::cr1), 0x1000U);
+  EXPECT_EQ(stream_reg(receive_stream, stream_cr), 0x414U);
+  EXPECT_FALSE(spi.busy());
+  EXPECT_TRUE(spi.transfer(sensor_read));
+}
+
 TEST_F(SpiTest, RefusesAKernelClockNoDividerBringsDown) {
   spi_registers.fill(0xAAAA'AAAA);
   EXPECT_FALSE(spi.start(300'000'000, 1'000'000));  // /256 would still give 1.17 MHz
@@ -153,12 +163,14 @@ TEST_F(SpiTest, RefusesWhileATransferRunsAndSizesItCannotTake) {
   ASSERT_TRUE(spi.transfer(sensor_read));
   const std::array<std::uint8_t, 2> who_am_i{0x75 | 0x80, 0};
   expect_refused(who_am_i);  // running
-  stream_reg(transmit_stream, stream_cr) &= ~1U;
-  stream_reg(receive_stream, stream_cr) &= ~1U;
-  expect_refused(who_am_i);  // the streams are done, but SPE stays set until the receive interrupt ends it
-  reg(Spi::cr1) = 0x1000;
+  finish_transfer(sensor_read);
+  expect_refused(who_am_i);  // the streams are done, but only the receive interrupt ends the transfer
+  EXPECT_TRUE(spi.busy());
+  static_cast<void>(spi.on_receive_interrupt());
+  EXPECT_FALSE(spi.busy());
   stream_reg(receive_stream, stream_cr) |= 1U;
-  expect_refused(who_am_i);  // the receive stream still stopping (after an error)
+  EXPECT_TRUE(spi.busy());
+  expect_refused(who_am_i);  // the receive stream still stopping (as after an error)
   stream_reg(receive_stream, stream_cr) &= ~1U;
   stream_reg(transmit_stream, stream_cr) |= 1U;
   expect_refused(who_am_i);  // the transmit stream still stopping
@@ -166,7 +178,7 @@ TEST_F(SpiTest, RefusesWhileATransferRunsAndSizesItCannotTake) {
   const std::array<std::uint8_t, 33> too_long{};
   expect_refused(too_long);
   expect_refused({});
-  EXPECT_TRUE(spi.transfer(who_am_i));
+  EXPECT_TRUE(spi.transfer(who_am_i));  // a refusal gives the SPI back
 }
 
 TEST_F(SpiTest, ATransmitErrorIsCountedAndEndsTheTransfer) {
@@ -189,14 +201,21 @@ TEST_F(SpiTest, ReceiveErrorsAndSpiFaultsAreCounted) {
   start_at_pclk2();
   ASSERT_TRUE(spi.transfer(sensor_read));
   finish_transfer(sensor_read);
-  reg(Spi::sr) |= Spi::overrun | Spi::mode_fault;
-  const DmaFlags faulty = spi.on_receive_interrupt();
-  EXPECT_TRUE(faulty.complete);
-  EXPECT_TRUE(faulty.error);
+  reg(Spi::sr) |= Spi::overrun;
+  const DmaFlags overrun = spi.on_receive_interrupt();
+  EXPECT_TRUE(overrun.complete);
+  EXPECT_TRUE(overrun.error);
+  EXPECT_EQ(spi.errors().overruns, 1U);
+  EXPECT_EQ(spi.errors().mode_faults, 0U);
+  EXPECT_EQ(reg(Spi::ifcr), 0x258U);
+
+  ASSERT_TRUE(spi.transfer(sensor_read));
+  finish_transfer(sensor_read);
+  reg(Spi::sr) |= Spi::mode_fault;
+  EXPECT_TRUE(spi.on_receive_interrupt().error);
   EXPECT_EQ(spi.errors().overruns, 1U);
   EXPECT_EQ(spi.errors().mode_faults, 1U);
   EXPECT_EQ(spi.errors().dma_errors, 0U);
-  EXPECT_EQ(reg(Spi::ifcr), 0x258U);
 
   reg(Spi::sr) = 0;
   ASSERT_TRUE(spi.transfer(sensor_read));
@@ -213,13 +232,29 @@ TEST_F(SpiTest, ReceiveErrorsAndSpiFaultsAreCounted) {
 TEST_F(SpiTest, AnInterruptWithoutItsFlagsEndsNothing) {
   start_at_pclk2();
   ASSERT_TRUE(spi.transfer(sensor_read));
-  dma[lisr / 4] = transmit_complete | 0x3DU;  // another stream's flags (stream 0)
+  dma[lisr / 4] = transmit_complete | 0x3DU;  // other streams' flags (3 and 0)
   const DmaFlags flags = spi.on_receive_interrupt();
   EXPECT_FALSE(flags.complete);
   EXPECT_FALSE(flags.error);
   EXPECT_EQ(reg(Spi::cr1), 0x1201U);
   EXPECT_EQ(dma[lifcr / 4], 0x3DU << 22);  // untouched since transfer()
   EXPECT_TRUE(spi.busy());
+}
+
+TEST_F(SpiTest, ATransferEndsOnce) {
+  start_at_pclk2();
+  ASSERT_TRUE(spi.transfer(sensor_read));
+  finish_transfer(sensor_read);
+  ASSERT_TRUE(spi.on_receive_interrupt().complete);
+  // A late transfer error of the transmit stream, and a stale completion: counted and taken, nothing ended again.
+  reg(Spi::cr1) = 0xAAAA'AAAA;
+  reg(Spi::ifcr) = 0;
+  dma[lisr / 4] = transmit_error | receive_complete;
+  EXPECT_TRUE(spi.on_transmit_interrupt().error);
+  EXPECT_TRUE(spi.on_receive_interrupt().complete);
+  EXPECT_EQ(spi.errors().dma_errors, 1U);
+  EXPECT_EQ(reg(Spi::cr1), 0xAAAA'AAAAU);
+  EXPECT_EQ(reg(Spi::ifcr), 0U);
 }
 
 }  // namespace

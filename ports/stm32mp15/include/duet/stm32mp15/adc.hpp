@@ -3,7 +3,8 @@
 // on PF12, the mean of 100 samples taken by one DMA one-shot within 2 ms (thesis 5.7 "ADC Battery Voltage", Req_08),
 // DMA2 stream 4 with half-word elements. Register level, no HAL; the addresses are the blocks' (fake register files
 // in the PC's tests). The object holds the samples: give it static storage in the M4's SRAM and never move it.
-//   AdcSampler<> battery{adc1_base, adc12_common_base, dma2_stream(4), dma_request::adc1};
+//   AdcSampler<> battery{adc1_base, adc12_common_base, DmaStream{dma2_base, 4, dma2_request_line(4)},
+//                        dma_request::adc1};
 //
 // 16-bit results: the thesis' K_ADC = 3.3 V / 2^16 x (R46 + R47) / R46 ~ 192.85 uV per count (eq. 5.13) needs them
 // (full scale 12.6 V); its CubeMX figure shows 12 bits, with which that gain would read a full scale of 0.79 V.
@@ -58,7 +59,7 @@ class AdcSampler {
   static constexpr std::uint32_t set_only = 0x8000'003F;
   // CFGR: DMNGT = 01 (DMA one-shot), OVRMOD, CONT; RES = 000 (16 bits), EXTEN = 00 (started by software)
   static constexpr std::uint32_t configuration = 1U << 0U | 1U << 12U | 1U << 13U;
-  static constexpr std::uint32_t sampling_64_5_cycles = 5;  // SMPx
+  static constexpr std::uint32_t sampling_64_5_cycles = 5;        // SMPx
   static constexpr std::uint32_t clock_divided_by_2 = 1U << 18U;  // CCR: PRESC = 0001, CKMODE = 00 (asynchronous)
   static constexpr unsigned max_channel = 19;
   static constexpr std::uint32_t max_clock_hz = 36'000'000;
@@ -71,7 +72,7 @@ class AdcSampler {
 
   // `base`: the ADC's registers; `common_base`: its pair's common registers; `stream`: its DMA stream, fed by the
   // DMAMUX request `request`.
-  AdcSampler(std::uintptr_t base, std::uintptr_t common_base, DmaStream stream, std::uint32_t request)
+  constexpr AdcSampler(std::uintptr_t base, std::uintptr_t common_base, DmaStream stream, std::uint32_t request)
       : base_(base), common_base_(common_base), stream_(stream), request_(request) {}
   AdcSampler(const AdcSampler&) = delete;
   AdcSampler& operator=(const AdcSampler&) = delete;

@@ -16,7 +16,7 @@ inline constexpr std::uintptr_t dma2_base = 0x4800'1000;
 inline constexpr std::uintptr_t dmamux1_base = 0x4800'2000;
 
 // The DMAMUX1 channel register (CxCR) that feeds DMA2 stream `stream`: DMA1's streams take channels 0-7, DMA2's 8-15.
-constexpr std::uintptr_t dma2_request_line(unsigned stream) { return dmamux1_base + 4U * (8U + stream); }
+constexpr std::uintptr_t dma2_request_line(unsigned stream) { return dmamux1_base + std::uintptr_t{4} * (8U + stream); }
 
 // DMAMUX1 request inputs (RM0436 DMAMUX, "DMAMUX1 request line multiplexer inputs").
 namespace dma_request {
@@ -51,11 +51,11 @@ class DmaStream {
   static constexpr std::uint32_t cr = 0x10, ndtr = 0x14, par = 0x18, m0ar = 0x1C, fcr = 0x24;
   static constexpr std::uint32_t stream_spacing = 0x18;
   // SxCR
-  static constexpr std::uint32_t enable = 1U << 0U;                       // EN
-  static constexpr std::uint32_t transfer_error_interrupt = 1U << 2U;     // TEIE
-  static constexpr std::uint32_t transfer_complete_interrupt = 1U << 4U;  // TCIE
-  static constexpr unsigned direction_shift = 6;                          // DIR
-  static constexpr std::uint32_t memory_increment = 1U << 10U;            // MINC
+  static constexpr std::uint32_t enable = 1U << 0U;                              // EN
+  static constexpr std::uint32_t transfer_error_interrupt = 1U << 2U;            // TEIE
+  static constexpr std::uint32_t transfer_complete_interrupt = 1U << 4U;         // TCIE
+  static constexpr unsigned direction_shift = 6;                                 // DIR
+  static constexpr std::uint32_t memory_increment = 1U << 10U;                   // MINC
   static constexpr unsigned peripheral_size_shift = 11, memory_size_shift = 13;  // PSIZE, MSIZE
   // A stream's flags in LISR/HISR, and their clear bits in LIFCR/HIFCR, from the stream's flag offset.
   static constexpr std::uint32_t transfer_error_flag = 1U << 3U;     // TEIF
@@ -65,7 +65,7 @@ class DmaStream {
   // Stream `stream` (0-7) of the controller at `dma_base`, fed by the DMAMUX channel register at `request_line`.
   constexpr DmaStream(std::uintptr_t dma_base, unsigned stream, std::uintptr_t request_line)
       : dma_base_(dma_base),
-        stream_base_(dma_base + stream_spacing * stream),
+        stream_base_(dma_base + std::uintptr_t{stream_spacing} * stream),
         flag_shift_(flag_shifts[stream % 4U]),
         high_(stream >= 4),
         request_line_(request_line) {}
@@ -78,7 +78,7 @@ class DmaStream {
     write(par, static_cast<std::uint32_t>(setup.peripheral_address));
     write(m0ar, static_cast<std::uint32_t>(setup.memory_address));
     write_at(request_line_, setup.request);  // DMAREQ_ID; no synchronisation, no event generation
-    write(fcr, 0);                                         // DMDIS = 0: direct mode
+    write(fcr, 0);                           // DMDIS = 0: direct mode
     const auto size = static_cast<std::uint32_t>(setup.element);
     write(cr, static_cast<std::uint32_t>(setup.direction) << direction_shift |
                   (setup.memory_increment ? memory_increment : 0U) | size << peripheral_size_shift |
@@ -104,9 +104,8 @@ class DmaStream {
   // In the stream's interrupt: its transfer-complete and transfer-error flags, each cleared if it was set; the
   // other streams' flags and this stream's others are left alone.
   [[nodiscard]] DmaFlags take_flags() const {
-    const std::uint32_t seen =
-        cortex_m::register32(dma_base_ + (high_ ? hisr : lisr)) >> flag_shift_ &
-        (transfer_complete_flag | transfer_error_flag);
+    const std::uint32_t seen = cortex_m::register32(dma_base_ + (high_ ? hisr : lisr)) >> flag_shift_ &
+                               (transfer_complete_flag | transfer_error_flag);
     if (seen != 0) write_at(flag_clear(), seen << flag_shift_);
     return {(seen & transfer_complete_flag) != 0, (seen & transfer_error_flag) != 0};
   }
@@ -131,8 +130,5 @@ class DmaStream {
   bool high_;
   std::uintptr_t request_line_;
 };
-
-// DMA2 stream `stream` (0-7) on the chip.
-constexpr DmaStream dma2_stream(unsigned stream) { return DmaStream{dma2_base, stream, dma2_request_line(stream)}; }
 
 }  // namespace duet::stm32mp15

@@ -10,7 +10,8 @@
 //
 // Register level, no HAL; the addresses are the blocks' (fake register files in the PC's tests). The object holds
 // the DMA buffers: give it static storage in the M4's SRAM and never move it. The robot's:
-//   SpiMaster<> imu{spi5_base, dma2_stream(3), dma_request::spi5_tx, dma2_stream(2), dma_request::spi5_rx};
+//   SpiMaster<> imu{spi5_base, DmaStream{dma2_base, 3, dma2_request_line(3)}, dma_request::spi5_tx,
+//                   DmaStream{dma2_base, 2, dma2_request_line(2)}, dma_request::spi5_rx};
 
 #include <array>
 #include <atomic>
@@ -38,11 +39,11 @@ class SpiMaster {
   static_assert(Capacity >= 1 && Capacity <= 0xFFFF, "TSIZE and NDTR count at most 65535 frames");
 
  public:
-  static constexpr std::uint32_t cr1 = 0x00, cr2 = 0x04, cfg1 = 0x08, cfg2 = 0x0C, sr = 0x14, ifcr = 0x18,
-                                 txdr = 0x20, rxdr = 0x30;
+  static constexpr std::uint32_t cr1 = 0x00, cr2 = 0x04, cfg1 = 0x08, cfg2 = 0x0C, sr = 0x14, ifcr = 0x18, txdr = 0x20,
+                                 rxdr = 0x30;
   // CR1
-  static constexpr std::uint32_t enable = 1U << 0U;           // SPE
-  static constexpr std::uint32_t start_transfer = 1U << 9U;   // CSTART
+  static constexpr std::uint32_t enable = 1U << 0U;            // SPE
+  static constexpr std::uint32_t start_transfer = 1U << 9U;    // CSTART
   static constexpr std::uint32_t internal_select = 1U << 12U;  // SSI: the slave-select level SSM feeds the master,
                                                                // high so that it sees no mode fault
   // CFG1 (FTHLV = 0: a DMA request per frame)
@@ -53,9 +54,9 @@ class SpiMaster {
   static constexpr unsigned baud_rate_shift = 28;             // MBR: the kernel clock / 2^(MBR + 1)
   static constexpr std::uint32_t no_baud_rate = 8;            // baud_rate_setting(): no MBR is slow enough
   // CFG2
-  static constexpr std::uint32_t master = 1U << 22U;          // MASTER
-  static constexpr std::uint32_t clock_phase = 1U << 24U;     // CPHA
-  static constexpr std::uint32_t clock_polarity = 1U << 25U;  // CPOL
+  static constexpr std::uint32_t master = 1U << 22U;           // MASTER
+  static constexpr std::uint32_t clock_phase = 1U << 24U;      // CPHA
+  static constexpr std::uint32_t clock_polarity = 1U << 25U;   // CPOL
   static constexpr std::uint32_t software_select = 1U << 26U;  // SSM
   static constexpr std::uint32_t keep_pins = 1U << 31U;        // AFCNTR: the SPI drives its pins while SPE = 0
   // SR flags and their IFCR clear bits (EOTC, TXTFC, OVRC, MODFC) at the same positions
@@ -66,8 +67,8 @@ class SpiMaster {
   static constexpr std::uint32_t all_flags = 0xFF8;           // IFCR: EOTC .. SUSPC
 
   // `base`: the SPI's registers; `transmit`, `receive`: its DMA streams, with the DMAMUX requests that feed them.
-  SpiMaster(std::uintptr_t base, DmaStream transmit, std::uint32_t transmit_request, DmaStream receive,
-            std::uint32_t receive_request)
+  constexpr SpiMaster(std::uintptr_t base, DmaStream transmit, std::uint32_t transmit_request, DmaStream receive,
+                      std::uint32_t receive_request)
       : base_(base),
         transmit_(transmit),
         receive_(receive),
@@ -98,6 +99,7 @@ class SpiMaster {
     write(ifcr, all_flags);
     write(cfg1, setting << baud_rate_shift | crc_size_reset | frame_8_bits);
     write(cfg2, keep_pins | software_select | clock_polarity | clock_phase | master);
+    state_.store(State::idle, std::memory_order_release);
     return transmit_.configure({.direction = DmaDirection::memory_to_peripheral,
                                 .peripheral_address = base_ + txdr,
                                 .memory_address = reinterpret_cast<std::uintptr_t>(transmit_buffer_.data()),
@@ -112,13 +114,21 @@ class SpiMaster {
                                .request = receive_request_});
   }
 
-  // A transfer started and not yet ended by the handlers below (HAL_BUSY).
-  [[nodiscard]] bool busy() const { return (read(cr1) & enable) != 0 || transmit_.enabled() || receive_.enabled(); }
+  // A transfer started and not yet ended by the handlers below (HAL_BUSY), or a stream still stopping.
+  [[nodiscard]] bool busy() const {
+    return state_.load(std::memory_order_acquire) != State::idle || transmit_.enabled() || receive_.enabled();
+  }
 
   // Sends `bytes` (1 to Capacity) and receives as many meanwhile. False, nothing touched, while busy() or for a
-  // size it cannot take. Call it from one task only.
+  // size it cannot take. Interrupt-safe: of two tasks calling it at once, one gets the SPI.
   [[nodiscard]] bool transfer(std::span<const std::uint8_t> bytes) {
-    if (bytes.empty() || bytes.size() > Capacity || busy()) return false;
+    if (bytes.empty() || bytes.size() > Capacity) return false;
+    State idle = State::idle;
+    if (!state_.compare_exchange_strong(idle, State::running, std::memory_order_acquire)) return false;
+    if (transmit_.enabled() || receive_.enabled()) {  // still stopping after an error: DmaStream::arm() needs EN = 0
+      state_.store(State::idle, std::memory_order_release);
+      return false;
+    }
     const auto count = static_cast<std::uint32_t>(bytes.size());
     for (std::size_t i = 0; i < bytes.size(); ++i) transmit_buffer_[i] = bytes[i];
     count_ = count;
@@ -134,28 +144,25 @@ class SpiMaster {
     return true;
   }
 
-  // DMA2_Stream3's handler: takes the transmit stream's flags; a transfer error ends the transfer. Both handlers
-  // at one interrupt priority: they share the counts and the ending.
+  // DMA2_Stream3's handler: takes the transmit stream's flags; a transfer error ends the transfer.
   DmaFlags on_transmit_interrupt() {
     const DmaFlags flags = transmit_.take_flags();
     if (flags.error) {
-      ++errors_.dma_errors;
-      end_transfer();
+      dma_errors_.fetch_add(1, std::memory_order_relaxed);
+      static_cast<void>(end_transfer());
     }
     return flags;
   }
 
-  // DMA2_Stream2's handler: takes the receive stream's flags; on completion or an error it counts the SPI's error
-  // flags and ends the transfer (the next one may start). `complete` without `error`: received() holds the bytes.
+  // DMA2_Stream2's handler: takes the receive stream's flags; on completion or an error it ends the transfer (the
+  // next one may start), counting the SPI's error flags. `complete` without `error`: received() holds the bytes.
+  // Either handler may preempt the other, and a task calling transfer() may preempt both.
   DmaFlags on_receive_interrupt() {
     const DmaFlags flags = receive_.take_flags();
     if (!flags.complete && !flags.error) return flags;
-    const std::uint32_t status = read(sr);
-    if (flags.error) ++errors_.dma_errors;
-    if ((status & overrun) != 0) ++errors_.overruns;
-    if ((status & mode_fault) != 0) ++errors_.mode_faults;
-    end_transfer();
-    return {flags.complete, flags.error || (status & (overrun | mode_fault)) != 0};
+    if (flags.error) dma_errors_.fetch_add(1, std::memory_order_relaxed);
+    const bool spi_error = end_transfer();
+    return {flags.complete, flags.error || spi_error};
   }
 
   // The bytes the last transfer received, byte 0 clocked in while the first byte (the MPU6500's address) went out.
@@ -164,17 +171,35 @@ class SpiMaster {
     std::atomic_signal_fence(std::memory_order_acquire);  // the stream wrote them behind the compiler's back
     return {receive_buffer_.data(), count_};
   }
-  [[nodiscard]] const SpiErrors& errors() const { return errors_; }
+  [[nodiscard]] SpiErrors errors() const {
+    return {overruns_.load(std::memory_order_relaxed), mode_faults_.load(std::memory_order_relaxed),
+            dma_errors_.load(std::memory_order_relaxed)};
+  }
 
  private:
-  // RM0436 SPI, closing a communication using DMA: the streams off, the SPI off (its end flags cleared first, as
-  // the HAL does), then its DMA requests off. Never waits: the rx stream's completion means every frame is in.
-  void end_transfer() {
+  // Who has the SPI: transfer() takes it (idle to running); the handler that ends the transfer takes it over (running
+  // to ending) and gives it back only after its last register write, so that neither the other handler nor a task
+  // calling transfer() can come in between.
+  enum class State : std::uint8_t { idle, running, ending };
+  static_assert(std::atomic<State>::is_always_lock_free && std::atomic<std::uint32_t>::is_always_lock_free,
+                "shared by handlers and tasks without a lock");
+
+  // RM0436 SPI, closing a communication using DMA: the streams off, the SPI off (its flags cleared first, as the
+  // HAL does), then its DMA requests off. Never waits: the receive stream's completion means every frame is in.
+  // Whether the SPI had lost a frame or seen a mode fault; false, nothing done, if the transfer is not running.
+  bool end_transfer() {
+    State running = State::running;
+    if (!state_.compare_exchange_strong(running, State::ending, std::memory_order_acquire)) return false;
+    const std::uint32_t status = read(sr);
+    if ((status & overrun) != 0) overruns_.fetch_add(1, std::memory_order_relaxed);
+    if ((status & mode_fault) != 0) mode_faults_.fetch_add(1, std::memory_order_relaxed);
     transmit_.disable();
     receive_.disable();
     write(ifcr, end_of_transfer | transfer_filled | overrun | mode_fault);
     write(cr1, internal_select);
-    cortex_m::modify32(base_ + cfg1, receive_dma | transmit_dma, 0);
+    cortex_m::modify32(base_ + cfg1, receive_dma | transmit_dma, 0);  // CFG1 is read-only while SPE = 1
+    state_.store(State::idle, std::memory_order_release);
+    return (status & (overrun | mode_fault)) != 0;
   }
 
   [[nodiscard]] std::uint32_t read(std::uint32_t offset) const { return cortex_m::register32(base_ + offset); }
@@ -188,7 +213,10 @@ class SpiMaster {
   std::array<std::uint8_t, Capacity> transmit_buffer_{};
   std::array<std::uint8_t, Capacity> receive_buffer_{};
   std::size_t count_ = 0;
-  SpiErrors errors_{};
+  std::atomic<State> state_{State::idle};
+  std::atomic<std::uint32_t> overruns_{0};
+  std::atomic<std::uint32_t> mode_faults_{0};
+  std::atomic<std::uint32_t> dma_errors_{0};
 };
 
 }  // namespace duet::stm32mp15
