@@ -61,8 +61,8 @@ bool imu_read_transfer = false;  // whether the transfer under way reads (its re
 constexpr unsigned battery_channel = 6;
 constexpr std::size_t battery_sample_capacity = 128;
 chip::AdcSampler<battery_sample_capacity> battery_adc{chip::adc1_base, chip::adc12_common_base,
-                                   chip::DmaStream{chip::dma2_base, 4, chip::dma2_request_line(4)},
-                                   chip::dma_request::adc1};
+                                                      chip::DmaStream{chip::dma2_base, 4, chip::dma2_request_line(4)},
+                                                      chip::dma_request::adc1};
 constexpr hardware::Pin imu_chip_select = hardware::pin("PE7");
 
 // The motor driver's standby and direction inputs low (TB6612FNG: standby, outputs off), the PWM off.
