@@ -2,23 +2,14 @@
 
 #include <cstring>
 
+#include "little_endian.hpp"
+
 namespace duet::rpmsg {
-namespace {
 
-void put32(std::uint8_t* at, std::uint32_t value) {
-  for (unsigned byte = 0; byte < 4; ++byte) at[byte] = static_cast<std::uint8_t>(value >> (8U * byte));
-}
-void put16(std::uint8_t* at, std::uint16_t value) {
-  at[0] = static_cast<std::uint8_t>(value);
-  at[1] = static_cast<std::uint8_t>(value >> 8U);
-}
-std::uint32_t get32(const std::uint8_t* at) {
-  return static_cast<std::uint32_t>(at[0]) | static_cast<std::uint32_t>(at[1]) << 8U |
-         static_cast<std::uint32_t>(at[2]) << 16U | static_cast<std::uint32_t>(at[3]) << 24U;
-}
-std::uint16_t get16(const std::uint8_t* at) { return static_cast<std::uint16_t>(at[0] | at[1] << 8U); }
-
-}  // namespace
+using little_endian::get16;
+using little_endian::get32;
+using little_endian::put16;
+using little_endian::put32;
 
 bool Device::send_from(std::uint32_t source, std::uint32_t destination, std::span<const std::uint8_t> first,
                        std::span<const std::uint8_t> second) {

@@ -2,18 +2,13 @@
 
 #include <atomic>
 
+#include "little_endian.hpp"
+
 namespace duet::rpmsg {
 namespace {
 
 // Shared memory: read and write each field with one access the compiler may neither merge nor cache.
 std::uint16_t read16(const volatile std::uint16_t* field) { return *field; }
-std::uint32_t read32(const volatile std::uint8_t* bytes) {
-  return static_cast<std::uint32_t>(bytes[0]) | static_cast<std::uint32_t>(bytes[1]) << 8U |
-         static_cast<std::uint32_t>(bytes[2]) << 16U | static_cast<std::uint32_t>(bytes[3]) << 24U;
-}
-void write32(volatile std::uint8_t* bytes, std::uint32_t value) {
-  for (unsigned byte = 0; byte < 4; ++byte) bytes[byte] = static_cast<std::uint8_t>(value >> (8U * byte));
-}
 
 }  // namespace
 
@@ -42,9 +37,10 @@ std::optional<DeviceVring::Buffer> DeviceVring::take() {
   ++last_avail_;
   if (head >= layout_.num) return Buffer{head, 0, 0};  // a driver's mistake: hand it back empty
   const auto* descriptor = reinterpret_cast<const volatile std::uint8_t*>(base_ + 16U * head);
-  const std::uint64_t address = read32(descriptor) | static_cast<std::uint64_t>(read32(descriptor + 4)) << 32U;
-  const std::uint32_t length = read32(descriptor + 8);
-  const std::uint16_t flags = static_cast<std::uint16_t>(descriptor[12] | descriptor[13] << 8U);
+  const std::uint64_t address =
+      little_endian::get32(descriptor) | static_cast<std::uint64_t>(little_endian::get32(descriptor + 4)) << 32U;
+  const std::uint32_t length = little_endian::get32(descriptor + 8);
+  const std::uint16_t flags = little_endian::get16(descriptor + 12);
   if ((flags & descriptor_next) != 0) return Buffer{head, 0, 0};
   return Buffer{head, address, length};
 }
@@ -52,8 +48,8 @@ std::optional<DeviceVring::Buffer> DeviceVring::take() {
 void DeviceVring::give_back(std::uint16_t head, std::uint32_t written) {
   const std::uint16_t slot = static_cast<std::uint16_t>(used_ & (layout_.num - 1U));
   auto* entry = reinterpret_cast<volatile std::uint8_t*>(base_ + layout_.used_offset() + 4U + 8U * slot);
-  write32(entry, head);
-  write32(entry + 4, written);
+  little_endian::put32(entry, head);
+  little_endian::put32(entry + 4, written);
   std::atomic_thread_fence(std::memory_order_release);  // the entry before the index that publishes it
   ++used_;
   *used_u16(1) = used_;
