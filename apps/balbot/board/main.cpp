@@ -87,6 +87,16 @@ void report_last_fault() {
   cortex_m::halt(1);
 }
 
+// SPI5's own interrupt ends a transfer that an overrun stopped short (spi.hpp): at the priority of the model's
+// receive task, whose transfer it is. After ExecutivePort::configure, which sets the priority grouping.
+void enable_spi_error_interrupt() {
+  const rt::Task& receive = model.tasks[spi_received_task];
+  cortex_m::set_interrupt_priority(
+      chip::interrupt::spi5,
+      cortex_m::grouped_priority(receive.priority.group, receive.priority.sub, model.sub_priority_bits));
+  cortex_m::enable_interrupt(chip::interrupt::spi5);
+}
+
 // The interrupt task `task` runs if its handler's peripheral says the event was the model's.
 void run_if(bool event, std::size_t task) {
   if (event) executive.on_interrupt_task(task);
@@ -108,6 +118,7 @@ extern "C" void DMA2_Stream3_IRQHandler() { run_if(balbot::board::on_spi_transmi
 extern "C" void DMA2_Stream2_IRQHandler() {
   run_if(balbot::board::on_spi_received(), balbot::board::spi_received_task);
 }
+extern "C" void SPI5_IRQHandler() { balbot::board::on_spi_error(); }
 extern "C" void DMA2_Stream4_IRQHandler() { run_if(balbot::board::on_adc_samples(), balbot::board::adc_task); }
 static_assert(duet::stm32mp15::application_message_interrupt == duet::stm32mp15::spare_interrupts[2],
               "the model's IPCC_RX1 task runs on the spare line whose handler is Software2");
@@ -120,6 +131,7 @@ int main() {
   if (!start_peripherals()) fail("a peripheral refused its set-up");
   prepare_linux_channels();
   if (!chip::ExecutivePort::configure(model)) fail("the model does not fit the board");
+  enable_spi_error_interrupt();
   if (executive.initialize() != rt::TaskTableError::none) fail("the model's task table is wrong");
   cortex_m::enable_interrupts();
   executive.run();  // until Linux stops the core: the model has no final tick here

@@ -224,6 +224,9 @@ bool on_spi_received() {
   hardware::gpio_write(imu_chip_select, true);
   return flags.complete && !flags.error && imu_read_transfer;
 }
+void on_spi_error() {
+  if (imu_bus.on_error_interrupt()) hardware::gpio_write(imu_chip_select, true);
+}
 bool on_adc_samples() {
   const chip::DmaFlags flags = battery_adc.on_dma_interrupt();
   return flags.complete && !flags.error;

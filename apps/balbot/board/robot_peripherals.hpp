@@ -21,6 +21,7 @@ bool on_echo_edge();        // TIM5: a capture on channel 2, either edge
 bool on_imu_data_ready();   // EXTI8
 bool on_spi_transmitted();  // DMA2 stream 3
 bool on_spi_received();     // DMA2 stream 2
+void on_spi_error();        // SPI5: an overrun or a mode fault stopped the transfer (no model task)
 bool on_adc_samples();      // DMA2 stream 4
 
 }  // namespace balbot::board

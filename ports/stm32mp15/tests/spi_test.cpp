@@ -74,6 +74,7 @@ TEST_F(SpiTest, StartsAMode3MasterOnBothStreams) {
   EXPECT_EQ(reg(Spi::ifcr), 0xFF8U);        // every flag cleared
   EXPECT_EQ(reg(Spi::cfg1), 0x6007'0007U);  // MBR = 6 (/128), CRCSIZE at reset, 8-bit frames, FTHLV = 0
   EXPECT_EQ(reg(Spi::cfg2), 0x8740'0000U);  // AFCNTR, SSM, CPOL, CPHA, MASTER; SSOE off, full duplex, Motorola
+  EXPECT_EQ(reg(Spi::ier), 0x240U);         // OVRIE, MODFIE: the errors that stop a transfer short
   EXPECT_EQ(stream_reg(transmit_stream, stream_cr), 0x454U);  // memory to peripheral, bytes, MINC, TCIE, TEIE
   EXPECT_EQ(stream_reg(transmit_stream, par), static_cast<std::uint32_t>(spi_base() + 0x20));  // TXDR
   EXPECT_EQ(stream_reg(receive_stream, stream_cr), 0x414U);                                    // peripheral to memory
@@ -227,6 +228,24 @@ TEST_F(SpiTest, ReceiveErrorsAndSpiFaultsAreCounted) {
   EXPECT_EQ(spi.errors().dma_errors, 1U);
   EXPECT_EQ(stream_reg(transmit_stream, stream_cr), 0x454U);
   EXPECT_EQ(reg(Spi::cr1), 0x1000U);
+}
+
+TEST_F(SpiTest, AnOverrunThatStopsTheSpiEndsTheTransferInItsOwnInterrupt) {
+  start_at_pclk2();
+  ASSERT_TRUE(spi.transfer(sensor_read));
+  EXPECT_FALSE(spi.on_error_interrupt());  // no error flag: nothing ended
+  EXPECT_TRUE(spi.busy());
+  reg(Spi::sr) = Spi::overrun;  // the receive stream never completes
+  EXPECT_TRUE(spi.on_error_interrupt());
+  EXPECT_EQ(spi.errors().overruns, 1U);
+  EXPECT_EQ(reg(Spi::cr1), 0x1000U);  // SPE off
+  EXPECT_EQ(stream_reg(receive_stream, stream_cr), 0x414U);
+  EXPECT_FALSE(spi.busy());
+  // The same flag again without a transfer (ended meanwhile): cleared, nothing counted.
+  reg(Spi::ifcr) = 0;
+  EXPECT_FALSE(spi.on_error_interrupt());
+  EXPECT_EQ(reg(Spi::ifcr), 0x240U);  // OVRC, MODFC
+  EXPECT_EQ(spi.errors().overruns, 1U);
 }
 
 TEST_F(SpiTest, AnInterruptWithoutItsFlagsEndsNothing) {

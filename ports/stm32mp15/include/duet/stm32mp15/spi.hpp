@@ -39,8 +39,8 @@ class SpiMaster {
   static_assert(Capacity >= 1 && Capacity <= 0xFFFF, "TSIZE and NDTR count at most 65535 frames");
 
  public:
-  static constexpr std::uint32_t cr1 = 0x00, cr2 = 0x04, cfg1 = 0x08, cfg2 = 0x0C, sr = 0x14, ifcr = 0x18, txdr = 0x20,
-                                 rxdr = 0x30;
+  static constexpr std::uint32_t cr1 = 0x00, cr2 = 0x04, cfg1 = 0x08, cfg2 = 0x0C, ier = 0x10, sr = 0x14, ifcr = 0x18,
+                                 txdr = 0x20, rxdr = 0x30;
   // CR1
   static constexpr std::uint32_t enable = 1U << 0U;            // SPE
   static constexpr std::uint32_t start_transfer = 1U << 9U;    // CSTART
@@ -64,7 +64,10 @@ class SpiMaster {
   static constexpr std::uint32_t transfer_filled = 1U << 4U;  // TXTF
   static constexpr std::uint32_t overrun = 1U << 6U;          // OVR
   static constexpr std::uint32_t mode_fault = 1U << 9U;       // MODF
-  static constexpr std::uint32_t all_flags = 0xFF8;           // IFCR: EOTC .. SUSPC
+  // IER: the SPI's own interrupt, for the errors that stop a transfer before the receive stream completes
+  static constexpr std::uint32_t overrun_interrupt = 1U << 6U;     // OVRIE
+  static constexpr std::uint32_t mode_fault_interrupt = 1U << 9U;  // MODFIE
+  static constexpr std::uint32_t all_flags = 0xFF8;                // IFCR: EOTC .. SUSPC
 
   // `base`: the SPI's registers; `transmit`, `receive`: its DMA streams, with the DMAMUX requests that feed them.
   constexpr SpiMaster(std::uintptr_t base, DmaStream transmit, std::uint32_t transmit_request, DmaStream receive,
@@ -99,6 +102,7 @@ class SpiMaster {
     write(ifcr, all_flags);
     write(cfg1, setting << baud_rate_shift | crc_size_reset | frame_8_bits);
     write(cfg2, keep_pins | software_select | clock_polarity | clock_phase | master);
+    write(ier, overrun_interrupt | mode_fault_interrupt);
     state_.store(State::idle, std::memory_order_release);
     return transmit_.configure({.direction = DmaDirection::memory_to_peripheral,
                                 .peripheral_address = base_ + txdr,
@@ -163,6 +167,15 @@ class SpiMaster {
     if (flags.error) dma_errors_.fetch_add(1, std::memory_order_relaxed);
     const bool spi_error = end_transfer();
     return {flags.complete, flags.error || spi_error};
+  }
+
+  // The SPI's own handler (SPI5): an overrun or a mode fault stops the SPI before the receive stream completes, so
+  // nothing else would end that transfer. True if it ended one (counted); flags without a transfer are cleared.
+  bool on_error_interrupt() {
+    if ((read(sr) & (overrun | mode_fault)) == 0) return false;
+    if (end_transfer()) return true;
+    write(ifcr, overrun | mode_fault);  // a DMA handler ended the transfer first, or there was none
+    return false;
   }
 
   // The bytes the last transfer received, byte 0 clocked in while the first byte (the MPU6500's address) went out.
