@@ -14,6 +14,7 @@
 
 #include "duet/app_channel/host/peer.hpp"
 #include "duet/dashboard/dashboard.hpp"
+#include "duet/dashboard/executive_status.hpp"
 
 namespace duet::bridge {
 
@@ -238,22 +239,9 @@ class AppService::Impl {
     }
   }
 
-  // The dashboard's Status page shows the last account; cycle counts become microseconds.
+  // The dashboard's Status page shows the last account.
   void on_executive(const app_channel::host::ExecutiveReport& report) {
-    const double us_per_cycle = report.cycle_hz == 0 ? 0.0 : 1e6 / report.cycle_hz;
-    json executive = {{"time_s", static_cast<double>(report.ticks) * report.base_period_ns * 1e-9},
-                      {"ticks", report.ticks},
-                      {"core_load", report.busy_ppm * 1e-6},
-                      {"overruns", report.overruns},
-                      {"tasks", json::array()}};
-    for (const auto& task : report.tasks) {
-      executive["tasks"].push_back({{"name", task.name},
-                                    {"activations", task.activations},
-                                    {"overruns", task.overruns},
-                                    {"min_us", task.min_cycles * us_per_cycle},
-                                    {"mean_us", task.mean_cycles * us_per_cycle},
-                                    {"max_us", task.max_cycles * us_per_cycle}});
-    }
+    json executive = dashboard::executive_status(report);
     const std::lock_guard lock{executive_mutex_};
     executive_ = std::move(executive);
   }

@@ -4,6 +4,8 @@
 #include <array>
 #include <string_view>
 
+#include "duet/dashboard/executive_status.hpp"
+
 namespace duet::cli {
 namespace {
 
@@ -65,24 +67,22 @@ std::optional<ExecutiveAccountLayout> ExecutiveAccountLayout::from(const xcp::ho
   return layout;
 }
 
-nlohmann::json ExecutiveAccountLayout::decode(std::span<const std::uint8_t> bytes, double base_period_s) const {
-  const std::uint32_t cycle_hz = word_at(bytes, offsets_[3]);
-  const double us_per_cycle = cycle_hz == 0 ? 0.0 : 1e6 / cycle_hz;
-  const std::uint32_t ticks = word_at(bytes, offsets_[0]);
-  nlohmann::json account = {{"time_s", ticks * base_period_s},
-                            {"ticks", ticks},
-                            {"core_load", word_at(bytes, offsets_[1]) * 1e-6},
-                            {"overruns", word_at(bytes, offsets_[2])},
-                            {"tasks", nlohmann::json::array()}};
+nlohmann::json ExecutiveAccountLayout::decode(std::span<const std::uint8_t> bytes, std::uint32_t base_period_ns) const {
+  app_channel::host::ExecutiveReport report{.ticks = word_at(bytes, offsets_[0]),
+                                            .base_period_ns = base_period_ns,
+                                            .busy_ppm = word_at(bytes, offsets_[1]),
+                                            .overruns = word_at(bytes, offsets_[2]),
+                                            .cycle_hz = word_at(bytes, offsets_[3]),
+                                            .tasks = {}};
   for (const Task& task : tasks_) {
-    account["tasks"].push_back({{"name", task.name},
-                                {"activations", word_at(bytes, task.offsets[0])},
-                                {"overruns", word_at(bytes, task.offsets[1])},
-                                {"min_us", word_at(bytes, task.offsets[2]) * us_per_cycle},
-                                {"mean_us", word_at(bytes, task.offsets[3]) * us_per_cycle},
-                                {"max_us", word_at(bytes, task.offsets[4]) * us_per_cycle}});
+    report.tasks.push_back({.name = task.name,
+                            .activations = word_at(bytes, task.offsets[0]),
+                            .overruns = word_at(bytes, task.offsets[1]),
+                            .min_cycles = word_at(bytes, task.offsets[2]),
+                            .mean_cycles = word_at(bytes, task.offsets[3]),
+                            .max_cycles = word_at(bytes, task.offsets[4])});
   }
-  return account;
+  return dashboard::executive_status(report);
 }
 
 }  // namespace duet::cli

@@ -21,9 +21,9 @@ class ExecutiveAccountLayout {
   static std::optional<ExecutiveAccountLayout> from(const xcp::host::A2lDescription& a2l);
 
   [[nodiscard]] const xcp::host::MemoryInfo& segment() const { return segment_; }
-  // The account as the status message's `executive`: time_s, ticks, core_load, overruns, tasks with times in us.
-  // `bytes` are the segment's, as uploaded.
-  [[nodiscard]] nlohmann::json decode(std::span<const std::uint8_t> bytes, double base_period_s) const;
+  // The account as the status message's `executive` (dashboard::executive_status). `bytes` are the segment's, as
+  // uploaded; `base_period_ns` the executive's base period, which the account does not hold.
+  [[nodiscard]] nlohmann::json decode(std::span<const std::uint8_t> bytes, std::uint32_t base_period_ns) const;
 
   // Whether a MEASUREMENT belongs to the account (not one of the model's signals).
   static bool is_account(const xcp::host::Variable& measurement);

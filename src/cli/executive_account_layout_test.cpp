@@ -39,7 +39,7 @@ TEST(ExecutiveAccountLayout, ReadsTheAccountDuetGenDescribes) {
   std::vector<std::uint8_t> bytes(sizeof account);
   std::memcpy(bytes.data(), &account, sizeof account);  // the target's bytes: little-endian, as the PC's
 
-  const nlohmann::json decoded = layout->decode(bytes, 0.001);
+  const nlohmann::json decoded = layout->decode(bytes, 1'000'000);  // 1 ms
   EXPECT_DOUBLE_EQ(decoded["time_s"].get<double>(), 4.0);
   EXPECT_DOUBLE_EQ(decoded["core_load"].get<double>(), 0.052);
   EXPECT_EQ(decoded["overruns"], 3);

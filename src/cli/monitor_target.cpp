@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <condition_variable>
 #include <deque>
 #include <mutex>
@@ -334,7 +335,7 @@ class MonitorTarget::Impl {
       account_.reset();
       return done();
     }
-    json account = account_->decode(bytes.value(), base_period_s_);
+    json account = account_->decode(bytes.value(), static_cast<std::uint32_t>(std::llround(base_period_s_ * 1e9)));
     const std::lock_guard lock{mutex_};
     account_json_ = std::move(account);
     return done();
