@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <cstring>
 
+#include "duet/model/generate.hpp"
+
 namespace duet::sil {
 namespace {
 
@@ -50,14 +52,13 @@ Result<Measurements> Measurements::from_a2l(std::string_view text, std::string_v
   }
   Measurements result{signals};
   for (const xcp::host::Variable& measurement : a2l.value().measurements) {
+    if (model::is_executive_account(a2l.value(), measurement)) continue;  // not the model's to record
     const std::size_t element_size = xcp::host::size_of(measurement.type);
     const std::uint64_t end = std::uint64_t{measurement.address} + std::uint64_t{measurement.count} * element_size;
     const auto within = [&](const xcp::host::MemoryInfo& info) {
       return measurement.address >= info.address && end <= std::uint64_t{info.address} + info.size;
     };
     if (!within(*segment)) {
-      // Another segment's (the executive's account) is not the model's to record; in none, the A2L is wrong.
-      if (std::any_of(memory.begin(), memory.end(), within)) continue;
       return Failure{std::string{source} + ": measurement '" + measurement.name +
                      "' lies outside the segment 'signals'"};
     }

@@ -5,11 +5,12 @@
 #include <string_view>
 
 #include "duet/dashboard/executive_status.hpp"
+#include "duet/model/generate.hpp"
 
 namespace duet::cli {
 namespace {
 
-constexpr std::string_view prefix = "executive.";
+constexpr std::string_view prefix = "executive.";  // the account's names: executive.FIELD, executive.TASK.FIELD
 constexpr std::array<std::string_view, 4> account_fields{"ticks", "busy_ppm", "overruns", "cycle_hz"};
 constexpr std::array<std::string_view, 5> task_fields{"activations", "overruns", "min_cycles", "mean_cycles",
                                                       "max_cycles"};
@@ -30,18 +31,15 @@ std::uint32_t word_at(std::span<const std::uint8_t> bytes, std::optional<std::ui
 
 }  // namespace
 
-bool ExecutiveAccountLayout::is_account(const xcp::host::Variable& measurement) {
-  return measurement.name.starts_with(prefix);
-}
-
 std::optional<ExecutiveAccountLayout> ExecutiveAccountLayout::from(const xcp::host::A2lDescription& a2l) {
-  const auto segment = std::find_if(a2l.memory.begin(), a2l.memory.end(),
-                                    [](const xcp::host::MemoryInfo& info) { return info.name == "executive"; });
+  const auto segment = std::find_if(a2l.memory.begin(), a2l.memory.end(), [](const xcp::host::MemoryInfo& info) {
+    return info.name == model::executive_segment;
+  });
   if (segment == a2l.memory.end()) return std::nullopt;
   ExecutiveAccountLayout layout;
   layout.segment_ = *segment;
   for (const xcp::host::Variable& measurement : a2l.measurements) {
-    if (!is_account(measurement) || measurement.type != xcp::host::DataType::uint32 ||
+    if (!measurement.name.starts_with(prefix) || measurement.type != xcp::host::DataType::uint32 ||
         measurement.address < segment->address || measurement.address + 4U > segment->address + segment->size) {
       continue;
     }

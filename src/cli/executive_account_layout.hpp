@@ -25,9 +25,6 @@ class ExecutiveAccountLayout {
   // uploaded; `base_period_ns` the executive's base period, which the account does not hold.
   [[nodiscard]] nlohmann::json decode(std::span<const std::uint8_t> bytes, std::uint32_t base_period_ns) const;
 
-  // Whether a MEASUREMENT belongs to the account (not one of the model's signals).
-  static bool is_account(const xcp::host::Variable& measurement);
-
  private:
   struct Task {
     std::string name;

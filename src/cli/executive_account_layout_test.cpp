@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "duet/model/generate.hpp"
 #include "duet/rt/executive_account.hpp"
 #include "duet/support/text_file.hpp"
 
@@ -53,10 +54,20 @@ TEST(ExecutiveAccountLayout, ReadsTheAccountDuetGenDescribes) {
 
 TEST(ExecutiveAccountLayout, TheAccountIsNoSignal) {
   const A2lDescription a2l = robot_a2l();
-  const auto account = std::count_if(a2l.measurements.begin(), a2l.measurements.end(), [](const auto& measurement) {
-    return ExecutiveAccountLayout::is_account(measurement);
+  const auto account = std::count_if(a2l.measurements.begin(), a2l.measurements.end(), [&](const auto& measurement) {
+    return model::is_executive_account(a2l, measurement);
   });
   EXPECT_EQ(account, 4 + 11 * 5);
+}
+
+TEST(ExecutiveAccountLayout, ASignalNamedLikeTheAccountIsStillTheModels) {
+  A2lDescription a2l = robot_a2l();
+  const auto signal = std::find_if(a2l.measurements.begin(), a2l.measurements.end(), [&](const auto& measurement) {
+    return !model::is_executive_account(a2l, measurement);
+  });
+  ASSERT_NE(signal, a2l.measurements.end());
+  signal->name = "executive.speed";  // a model's subsystem may be called "executive": the place decides
+  EXPECT_FALSE(model::is_executive_account(a2l, *signal));
 }
 
 TEST(ExecutiveAccountLayout, AnA2lWithoutOneHasNone) {

@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "duet/dashboard/dashboard.hpp"
+#include "duet/model/generate.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
 #include "executive_account_layout.hpp"
@@ -77,7 +78,7 @@ class MonitorTarget::Impl {
     const A2lDescription& a2l = options_.a2l;
     if (options_.signals.empty()) {  // every signal of the model; the executive's account is the Status page's
       for (const Variable& variable : a2l.measurements) {
-        if (!ExecutiveAccountLayout::is_account(variable)) options_.signals.push_back(variable.name);
+        if (!model::is_executive_account(a2l, variable)) options_.signals.push_back(variable.name);
       }
     }
     account_ = ExecutiveAccountLayout::from(a2l);

@@ -381,8 +381,8 @@ class FileWriter {
                                  .minimum = 0,
                                  .maximum = 4294967295.0};
     };
-    description.memory.push_back(
-        {"executive", 0, executive_xcp_address, static_cast<std::uint32_t>(16 + 20 * program_.tasks.size()), false});
+    description.memory.push_back({std::string{executive_segment}, 0, executive_xcp_address,
+                                  static_cast<std::uint32_t>(16 + 20 * program_.tasks.size()), false});
     description.measurements.push_back(word("executive.ticks", 0, "base ticks so far (the low 32 bits)"));
     description.measurements.push_back(word("executive.busy_ppm", 4, "core load", "ppm"));
     description.measurements.push_back(word("executive.overruns", 8, "releases that found their task unfinished"));
@@ -465,6 +465,15 @@ class FileWriter {
 Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,
                                             const std::string& model_folder) {
   return FileWriter{program, source, model_folder}.files();
+}
+
+bool is_executive_account(const xcp::host::A2lDescription& a2l, const xcp::host::Variable& measurement) {
+  const std::uint64_t end =
+      std::uint64_t{measurement.address} + std::uint64_t{measurement.count} * xcp::host::size_of(measurement.type);
+  return std::any_of(a2l.memory.begin(), a2l.memory.end(), [&](const xcp::host::MemoryInfo& segment) {
+    return segment.name == executive_segment && measurement.address >= segment.address &&
+           end <= std::uint64_t{segment.address} + segment.size;
+  });
 }
 
 }  // namespace duet::model

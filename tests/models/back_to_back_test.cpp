@@ -104,10 +104,10 @@ Recording run_generated(const Example& example, LoggingPlant& plant) {
   EXPECT_TRUE(a2l_text.ok());
   auto a2l = xcp::host::read_a2l(a2l_text.value());
   EXPECT_TRUE(a2l.ok()) << a2l.error();
-  // The model's signals, not the executive's account that the A2L describes beside them (executive_xcp_address).
+  // The model's signals, not the executive's account that the A2L describes beside them.
   std::vector<xcp::host::Variable> measurements;
   std::copy_if(a2l.value().measurements.begin(), a2l.value().measurements.end(), std::back_inserter(measurements),
-               [](const xcp::host::Variable& measurement) { return measurement.address < executive_xcp_address; });
+               [&](const xcp::host::Variable& measurement) { return !is_executive_account(a2l.value(), measurement); });
   Recording recording;
   for (const xcp::host::Variable& measurement : measurements) {
     for (std::uint32_t element = 0; element < measurement.count; ++element) {

@@ -11,10 +11,12 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "duet/model/program.hpp"
 #include "duet/support/result.hpp"
+#include "duet/xcp/host/a2l.hpp"
 
 namespace duet::model {
 
@@ -28,6 +30,14 @@ struct GeneratedFile {
 inline constexpr std::uint32_t parameters_xcp_address = 0x0001'0000;
 inline constexpr std::uint32_t signals_xcp_address = 0x0002'0000;
 inline constexpr std::uint32_t executive_xcp_address = 0x0003'0000;
+
+// The A2L's memory segment of the executive's account.
+inline constexpr std::string_view executive_segment = "executive";
+
+// Whether `measurement` is part of the executive's account: it lies in `a2l`'s segment "executive". Every other
+// MEASUREMENT (all the others of a generated A2L; all of another's) is the application's. By place, not by name: a
+// model's subsystem may be called "executive" too.
+[[nodiscard]] bool is_executive_account(const xcp::host::A2lDescription& a2l, const xcp::host::Variable& measurement);
 
 // `source` names the model file in the files' first lines; `model_folder` is the model's folder relative to where the
 // files go, for the CMake fragment to find the Code blocks' headers.
