@@ -16,7 +16,7 @@ set(CMAKE_EXE_LINKER_FLAGS_INIT "-nostdlib -Wl,--gc-sections -Wl,--print-memory-
 set(CMAKE_C_STANDARD_LIBRARIES "-lgcc")
 set(CMAKE_CXX_STANDARD_LIBRARIES "-lgcc")
 
-foreach(tool objcopy objdump size readelf)
+foreach(tool objcopy objdump size readelf nm)
   string(TOUPPER "${tool}" variable)
   find_program(DUET_ARM_NONE_EABI_${variable} arm-none-eabi-${tool} REQUIRED)
 endforeach()

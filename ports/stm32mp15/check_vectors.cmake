@@ -1,0 +1,48 @@
+# cmake -DOBJCOPY=<arm-none-eabi-objcopy> -DNM=<arm-none-eabi-nm> -DIMAGE=<elf> -DHANDLERS=<NAME=EXCEPTION;...> -P check_vectors.cmake
+# That an image's vector table sends each exception to the handler the application wrote for it: a handler of the wrong
+# name compiles and links, and its interrupt lands in Default_Handler on the board. EXCEPTION is the core's number
+# (16 + the device interrupt's). Thumb handlers' entries hold their address with bit 0 set.
+execute_process(COMMAND ${NM} ${IMAGE} RESULT_VARIABLE nm_exit OUTPUT_VARIABLE symbols ERROR_VARIABLE nm_error)
+set(table "${IMAGE}.vector_table.bin")
+execute_process(COMMAND ${OBJCOPY} -O binary --only-section=.vector_table ${IMAGE} ${table}
+                RESULT_VARIABLE objcopy_exit ERROR_VARIABLE objcopy_error)
+if(NOT nm_exit EQUAL 0 OR NOT objcopy_exit EQUAL 0)
+  message(FATAL_ERROR "cannot read ${IMAGE}: ${nm_error}${objcopy_error}")
+endif()
+
+# The table's words in order, each four bytes little-endian.
+file(READ "${table}" bytes HEX)
+file(REMOVE "${table}")
+string(REGEX MATCHALL "........" groups "${bytes}")
+set(words "")
+foreach(group IN LISTS groups)
+  string(REGEX REPLACE "(..)(..)(..)(..)" "\\4\\3\\2\\1" word "${group}")
+  list(APPEND words "${word}")
+endforeach()
+
+set(problems "")
+foreach(entry IN LISTS HANDLERS)
+  string(REPLACE "=" ";" pair "${entry}")
+  list(GET pair 0 handler)
+  list(GET pair 1 exception)
+  if(NOT symbols MATCHES "([0-9a-f]+) [TtW] ${handler}\n")
+    string(APPEND problems "\n  ${handler} is not in the image")
+    continue()
+  endif()
+  math(EXPR expected "0x${CMAKE_MATCH_1} | 1" OUTPUT_FORMAT HEXADECIMAL)
+  list(LENGTH words count)
+  if(exception GREATER_EQUAL count)
+    string(APPEND problems "\n  the table has no exception ${exception}")
+    continue()
+  endif()
+  list(GET words ${exception} word)
+  math(EXPR actual "0x${word}" OUTPUT_FORMAT HEXADECIMAL)
+  if(NOT actual EQUAL expected)
+    string(APPEND problems "\n  exception ${exception} goes to ${actual}, not to ${handler} (${expected})")
+  endif()
+endforeach()
+if(problems)
+  message(FATAL_ERROR "${IMAGE}'s vector table:${problems}")
+endif()
+list(LENGTH HANDLERS checked)
+message(STATUS "${IMAGE}: ${checked} handlers where the vector table sends their exceptions")
