@@ -8,7 +8,10 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
+#include "duet/xcp/framing.hpp"
+#include "duet/xcp/stream_transport.hpp"
 #include "linux_side.hpp"
 #include "recording_protocol.hpp"
 
@@ -126,6 +129,52 @@ TEST_F(LinuxLinkTest, ShutdownMakesTheOutputsSafeThenAcknowledges) {
   EXPECT_EQ(safe_states, 1);
   EXPECT_EQ(link.shutdown_requests(), 1U);
   EXPECT_EQ(ipcc_register(Ipcc::c2scr), 1U << ipcc_channel::shutdown);
+}
+
+// The firmware's XCP slave behind the link, as the robot's firmware has it: a master's CONNECT and SHORT_UPLOAD go in
+// as Linux's tty writes, the framed answers come back in Linux's receive buffers.
+TEST_F(LinuxLinkTest, AnXcpMasterTalksToTheSlaveThroughTheRings) {
+  using Bytes = std::vector<std::uint8_t>;
+  std::array<std::uint8_t, 4> signals{0x11, 0x22, 0x33, 0x44};
+  const std::array regions{xcp::MemoryRegion{.name = "signals", .address = 0x100, .size = 4, .memory = signals.data()}};
+  std::array<std::uint8_t, 256> queue_storage{};
+  xcp::TransmitQueue queue{queue_storage, {}};
+  const xcp::SlaveConfiguration configuration{
+      .memory = xcp::MemoryMap{regions}, .max_cto = 8, .max_dto = 8, .queue = &queue};
+  xcp::Slave slave{configuration};
+  std::array<std::uint8_t, 16> decoder_buffer{};
+  std::array<std::uint8_t, 8> packet_buffer{};
+  xcp::StreamTransport transport{slave, queue, xcp::ethernet_framing, decoder_buffer, 8, packet_buffer};
+  rpmsg::ByteChannel slave_channel{transport};
+  LinuxLink xcp_link{{&table, Ipcc{reinterpret_cast<std::uintptr_t>(ipcc_registers.data())},
+                      [](std::uint64_t address) { return buffer_at(address); }, &slave_channel, &application_channel,
+                      enter_safe_state}};
+  const auto frame = [](std::uint16_t counter, const Bytes& packet) {
+    Bytes bytes(xcp::ethernet_framing.frame_size(packet.size()));
+    xcp::write_frame(xcp::ethernet_framing, bytes, counter, packet);
+    return bytes;
+  };
+  linux_is_ready();
+  ASSERT_TRUE(xcp_link.try_start());
+  xcp_link.serve();
+  linux_side.receive();  // the announcements
+
+  Bytes commands = frame(0, {0xFF, 0x00});                                          // CONNECT
+  const Bytes upload = frame(1, {0xF4, 0x04, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00});  // SHORT_UPLOAD 4 at 0x100
+  commands.insert(commands.end(), upload.begin(), upload.end());
+  ASSERT_TRUE(linux_side.send(0x500, LinuxLink::xcp_address, commands));
+  ring(ipcc_channel::vring1);
+  xcp_link.serve();
+
+  Bytes answers;
+  for (const auto& message : linux_side.receive()) {
+    EXPECT_EQ(message.destination, 0x500U);
+    answers.insert(answers.end(), message.payload.begin(), message.payload.end());
+  }
+  Bytes expected = frame(0, {0xFF, 0x01, 0x80, 0x08, 0x08, 0x00, 0x01, 0x01});  // CAL/PAG, no DAQ here
+  const Bytes data = frame(1, {0xFF, 0x11, 0x22, 0x33, 0x44});
+  expected.insert(expected.end(), data.begin(), data.end());
+  EXPECT_EQ(answers, expected);
 }
 
 }  // namespace
