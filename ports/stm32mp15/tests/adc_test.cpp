@@ -37,7 +37,7 @@ class CalibratingAdc {
   CalibratingAdc(std::uint32_t& control, std::uint32_t& configuration, std::uint32_t& differential,
                  std::uint32_t& common_control)
       : thread_([this, cr = &control, cfgr = &configuration, difsel = &differential,
-                 ccr = &common_control](std::stop_token stop) {
+                 ccr = &common_control](const std::stop_token& stop) {
           while (!stop.stop_requested()) {
             const std::uint32_t value = std::atomic_ref<std::uint32_t>{*cr}.load();
             if ((value & Adc::calibrate) != 0) {

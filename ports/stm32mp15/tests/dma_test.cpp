@@ -16,7 +16,7 @@ constexpr std::uint32_t cr = 0x10, ndtr = 0x14, par = 0x18, m0ar = 0x1C, fcr = 0
 class DmaTest : public ::testing::Test {
  protected:
   std::uint32_t& reg(std::uint32_t offset) { return dma[offset / 4]; }
-  std::uint32_t& stream_reg(unsigned stream, std::uint32_t offset) { return reg(offset + 0x18 * stream); }
+  std::uint32_t& stream_reg(unsigned index, std::uint32_t offset) { return reg(offset + 0x18 * index); }
   DmaStream stream(unsigned n) {
     return DmaStream{reinterpret_cast<std::uintptr_t>(dma.data()), n, reinterpret_cast<std::uintptr_t>(&dmamux[8 + n])};
   }

@@ -19,7 +19,6 @@ namespace duet::stm32mp15 {
 namespace {
 
 using rpmsg::testing::buffer_at;
-using rpmsg::testing::layout;
 using rpmsg::testing::LinuxSide;
 using rpmsg::testing::RecordingProtocol;
 using rpmsg::testing::vring1_at;

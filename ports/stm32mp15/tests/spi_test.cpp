@@ -25,7 +25,7 @@ constexpr std::array<std::uint8_t, 15> sensor_read{0xBB};
 class SpiTest : public ::testing::Test {
  protected:
   std::uint32_t& reg(std::uint32_t offset) { return spi_registers[offset / 4]; }
-  std::uint32_t& stream_reg(unsigned stream, std::uint32_t offset) { return dma[(offset + 0x18 * stream) / 4]; }
+  std::uint32_t& stream_reg(unsigned index, std::uint32_t offset) { return dma[(offset + 0x18 * index) / 4]; }
   DmaStream stream(unsigned n) {
     return DmaStream{reinterpret_cast<std::uintptr_t>(dma.data()), n, reinterpret_cast<std::uintptr_t>(&dmamux[8 + n])};
   }
