@@ -33,7 +33,12 @@ void LinuxLink::ring(unsigned vring) {
 bool LinuxLink::try_start() {
   if (started_) return true;
   volatile ResourceTable& table = *configuration_.table;
-  if ((table.vdev.status & virtio_status_driver_ok) == 0) return false;
+  const bool driver_ok = (table.vdev.status & virtio_status_driver_ok) != 0;
+  if (detached_) {
+    if (driver_ok) return false;  // still the session Linux left: wait for its reset of the device
+    detached_ = false;
+  }
+  if (!driver_ok) return false;
   if (!usable(table.vrings[0]) || !usable(table.vrings[1])) {
     problem_ = LinkProblem::bad_vring;
     return false;
@@ -43,6 +48,11 @@ bool LinuxLink::try_start() {
   };
   transmit_ = rpmsg::DeviceVring{configuration_.memory_at(table.vrings[0].device_address), layout(table.vrings[0])};
   receive_ = rpmsg::DeviceVring{configuration_.memory_at(table.vrings[1].device_address), layout(table.vrings[1])};
+  // A new session (the first, or after Linux detached): announced again, and Linux's endpoints learnt again.
+  endpoints_[0] = configuration_.xcp->endpoint("rpmsg-tty", xcp_address);
+  endpoints_[1] = configuration_.application->endpoint("rpmsg-tty", application_address);
+  device_ = rpmsg::Device{{&transmit_, &receive_, configuration_.memory_at, ring, endpoints_}};
+  announced_ = false;
   configuration_.ipcc.start(1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown |
                             1U << ipcc_channel::detach);
   problem_ = LinkProblem::none;
@@ -55,8 +65,17 @@ void LinuxLink::serve() {
   if (!started_) return;
   const Ipcc& ipcc = configuration_.ipcc;
   const std::uint32_t pending = ipcc.pending();
+  if ((pending & 1U << ipcc_channel::detach) != 0) {
+    // Linux lets the M4 run on without it (remoteproc's detach) and tears its RPMsg devices down: the rings are no
+    // longer ours to use. The next session starts once Linux has reset the device and set DRIVER_OK again.
+    started_ = false;
+    detached_ = true;
+    ++detaches_;
+    ipcc.acknowledge(ipcc_channel::detach);
+    return;
+  }
   // Acknowledged before the rings are read, so that a message Linux adds meanwhile rings again.
-  for (const unsigned channel : {ipcc_channel::vring0, ipcc_channel::vring1, ipcc_channel::detach}) {
+  for (const unsigned channel : {ipcc_channel::vring0, ipcc_channel::vring1}) {
     if ((pending & 1U << channel) != 0) ipcc.acknowledge(channel);
   }
   if (!announced_) announced_ = device_.announce();

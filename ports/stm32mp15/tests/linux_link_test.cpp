@@ -130,6 +130,46 @@ TEST_F(LinuxLinkTest, ShutdownMakesTheOutputsSafeThenAcknowledges) {
   EXPECT_EQ(ipcc_register(Ipcc::c2scr), 1U << ipcc_channel::shutdown);
 }
 
+TEST_F(LinuxLinkTest, AfterADetachANewSessionStartsWhenLinuxAttachesAgain) {
+  linux_is_ready();
+  ASSERT_TRUE(link.try_start());
+  link.serve();
+  linux_side.receive();
+  ASSERT_TRUE(linux_side.send(0x500, LinuxLink::xcp_address, {1}));
+  ring(ipcc_channel::vring1);
+  link.serve();
+  ASSERT_EQ(xcp.received.size(), 1U);
+
+  ipcc_register(Ipcc::c1toc2sr) = 1U << ipcc_channel::detach;
+  link.serve();
+  EXPECT_FALSE(link.started());
+  EXPECT_EQ(link.detaches(), 1U);
+  EXPECT_EQ(ipcc_register(Ipcc::c2scr), 1U << ipcc_channel::detach);  // acknowledged
+  ipcc_register(Ipcc::c1toc2sr) = 0;
+  xcp.queued = {0xAA};
+  link.serve();  // the rings are no longer the link's: nothing is sent
+  EXPECT_TRUE(linux_side.receive().empty());
+  EXPECT_FALSE(link.try_start());  // DRIVER_OK still set: the session Linux left
+
+  // Linux attaches again: it resets the device, sets up rings and buffers anew, and sets DRIVER_OK.
+  table.vdev.status = 0;
+  EXPECT_FALSE(link.try_start());
+  LinuxSide attached_again;
+  table.vdev.status = 0x07;
+  ASSERT_TRUE(link.try_start());
+  link.serve();
+  EXPECT_EQ(attached_again.receive().size(), 2U);             // both channels announced again
+  EXPECT_EQ(xcp_channel.bytes_dropped_without_reader(), 1U);  // queued for the old session: nobody to read it
+  ASSERT_TRUE(attached_again.send(0x600, LinuxLink::xcp_address, {2}));  // Linux's new endpoint
+  ring(ipcc_channel::vring1);
+  link.serve();
+  xcp.queued = {0xBB};
+  link.serve();
+  const auto answers = attached_again.receive();
+  ASSERT_EQ(answers.size(), 1U);
+  EXPECT_EQ(answers[0].destination, 0x600U);  // learnt anew, not the old session's 0x500
+}
+
 // The firmware's XCP slave behind the link, as the robot's firmware has it: a master's CONNECT and SHORT_UPLOAD go in
 // as Linux's tty writes, the framed answers come back in Linux's receive buffers.
 TEST_F(LinuxLinkTest, AnXcpMasterTalksToTheSlaveThroughTheRings) {

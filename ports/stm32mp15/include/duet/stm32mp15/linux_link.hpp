@@ -5,6 +5,7 @@
 // so the link comes up later, from the background loop (try_start), while the executive already runs the model:
 // control never waits for Linux. Then one interrupt, IPCC_RX1 at the lowest priority, does all the link's work
 // (serve): messages in, queued bytes out, Linux's shutdown and detach requests. Tasks only queue and pend it.
+// After a detach the link waits for Linux to attach again and starts a new session.
 
 #include <cstdint>
 
@@ -40,7 +41,8 @@ class LinuxLink {
 
   // From the background loop until it returns true: once Linux's driver has set DRIVER_OK, takes the vrings where
   // the table says and starts the IPCC. Never waits. Then serve() announces both channels: the caller pends its
-  // interrupt, so that serve() never runs twice at once.
+  // interrupt, so that serve() never runs twice at once. After Linux detached, false again until it has reset the
+  // device (DRIVER_OK cleared) and set it up anew.
   bool try_start();
   [[nodiscard]] bool started() const { return started_; }
   [[nodiscard]] LinkProblem problem() const { return problem_; }
@@ -51,6 +53,7 @@ class LinuxLink {
 
   [[nodiscard]] const rpmsg::Device& device() const { return device_; }
   [[nodiscard]] std::uint32_t shutdown_requests() const { return shutdown_requests_; }
+  [[nodiscard]] std::uint32_t detaches() const { return detaches_; }
 
  private:
   static void ring(unsigned vring);
@@ -62,8 +65,10 @@ class LinuxLink {
   rpmsg::Device device_;
   volatile bool started_ = false;  // the background loop sets it, the doorbell's handler reads it
   bool announced_ = false;
+  bool detached_ = false;  // Linux detached: wait for its reset of the device before the next session
   LinkProblem problem_ = LinkProblem::waiting_for_linux;
   std::uint32_t shutdown_requests_ = 0;
+  std::uint32_t detaches_ = 0;
 };
 
 }  // namespace duet::stm32mp15
