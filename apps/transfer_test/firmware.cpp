@@ -15,12 +15,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <span>
 
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/cortex_m/interrupts.hpp"
+#include "duet/cortex_m/masked_copy.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
@@ -42,11 +42,6 @@ namespace xcp = duet::xcp;
 
 constexpr unsigned console_uart = 3;
 
-void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
-  const cortex_m::InterruptMask masked;
-  std::memcpy(destination, bytes.data(), bytes.size());
-}
-
 // XCP: the model's calibration segment (the table, `playing`) and signals at the A2L's addresses, an event per task.
 // The queue holds the whole play-out's DAQ packets (4096 of 11 bytes with their LEN/CTR: 45 KB), as the
 // software-in-the-loop test's does: a host that stalls for a while loses nothing.
@@ -66,7 +61,7 @@ const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions
                                                 .max_cto = max_cto,
                                                 .max_dto = max_dto,
                                                 .identification = "transfer_test",
-                                                .write_atomically = write_with_interrupts_masked,
+                                                .write_atomically = cortex_m::copy_with_interrupts_masked,
                                                 .download_buffer = download_buffer,
                                                 .events = transfer_test::xcp::events,
                                                 .daq = {daq_lists, odts, odt_entries},

@@ -5,11 +5,11 @@
 
 #include <array>
 #include <cstdint>
-#include <cstring>
 
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/cortex_m/interrupts.hpp"
+#include "duet/cortex_m/masked_copy.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
 #include "duet/rt/executive.hpp"
@@ -46,11 +46,6 @@ constexpr duet::rt::ModelDescription model{
 board::ExecutivePort port;
 duet::rt::Executive<board::ExecutivePort, 1> executive{model, port};
 
-void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
-  const duet::cortex_m::InterruptMask masked;
-  std::memcpy(destination, bytes.data(), bytes.size());
-}
-
 // Downloads the group 1000 times through a slave whose writes go through `write`; returns the torn steps seen.
 std::uint32_t hammer(AtomicWrite write) {
   const std::array regions{MemoryRegion{.name = "parameters",
@@ -82,7 +77,7 @@ int main() {
   if (!board::ExecutivePort::configure(model) || executive.initialize() != duet::rt::TaskTableError::none) return 1;
   duet::cortex_m::enable_interrupts();
   if (!executive.begin()) return 1;
-  const std::uint32_t torn_with_atomic_writes = hammer(write_with_interrupts_masked);
+  const std::uint32_t torn_with_atomic_writes = hammer(duet::cortex_m::copy_with_interrupts_masked);
   const std::uint32_t torn_with_plain_writes = hammer(nullptr);
   executive.request_stop(duet::rt::StopReason::model);
   executive.end();

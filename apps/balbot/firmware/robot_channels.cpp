@@ -10,6 +10,7 @@
 #include "balbot.hpp"
 #include "balbot_xcp.hpp"
 #include "duet/cortex_m/interrupts.hpp"
+#include "duet/cortex_m/masked_copy.hpp"
 
 namespace balbot::firmware {
 namespace {
@@ -22,11 +23,6 @@ constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::res
 
 // XCP: the model's calibration segment, its signals and the executive's account (balbot_xcp.hpp, at the A2L's
 // addresses), an event per task.
-void write_with_interrupts_masked(std::uint8_t* destination, std::span<const std::uint8_t> bytes) {
-  const cortex_m::InterruptMask masked;
-  std::memcpy(destination, bytes.data(), bytes.size());
-}
-
 constexpr std::size_t max_cto = 248;
 constexpr std::size_t max_dto = 248;
 const std::array<xcp::CalibrationSegment, 1> segments{balbot::xcp::calibration_segment()};
@@ -42,7 +38,7 @@ const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions
                                                 .max_cto = max_cto,
                                                 .max_dto = max_dto,
                                                 .identification = "balbot",
-                                                .write_atomically = write_with_interrupts_masked,
+                                                .write_atomically = cortex_m::copy_with_interrupts_masked,
                                                 .download_buffer = download_buffer,
                                                 .events = balbot::xcp::events,
                                                 .daq = {daq_lists, odts, odt_entries},
