@@ -9,9 +9,9 @@
 #include "duet/cortex_m/registers.hpp"
 #include "duet/cortex_m/vector_table.hpp"
 
-namespace {
+namespace duet::cortex_m {
 
-std::string_view system_exception_name(std::uint32_t number) {
+std::string_view exception_name(std::uint32_t number) {
   switch (number) {
     case 2: return "NMI";
     case 3: return "HardFault";
@@ -26,14 +26,17 @@ std::string_view system_exception_name(std::uint32_t number) {
   }
 }
 
-}  // namespace
+}  // namespace duet::cortex_m
 
 // Exit code 128 + exception number, the shell's convention for "killed by signal N", so that a test sees at once
 // which exception stopped the firmware.
 extern "C" void Default_Handler() {
   const std::uint32_t number = duet::cortex_m::active_exception();
   duet::TextBuffer<120> report;
-  report.append("fatal: unhandled exception ").append(number).append(" (").append(system_exception_name(number));
+  report.append("fatal: unhandled exception ")
+      .append(number)
+      .append(" (")
+      .append(duet::cortex_m::exception_name(number));
   if (number >= 16) report.append(' ').append(number - 16U);
   // Configurable and hard fault status (ARMv7-M B3.2.15, B3.2.16): which fault, and why.
   report.append("), CFSR ").append_hex(duet::cortex_m::register32(0xE000ED28));

@@ -4,10 +4,8 @@
 
 #include "duet/stm32mp15/fault.hpp"
 
-#include <array>
 #include <cstdint>
 #include <optional>
-#include <string_view>
 
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
@@ -20,11 +18,6 @@ using duet::stm32mp15::FaultRecord;
 
 // In .noinit, at the end of the MCU SRAM (stm32mp15_m4.ld): neither the start-up code nor remoteproc writes it.
 [[gnu::section(".noinit.fault_record")]] FaultRecord last_fault;
-
-std::string_view fault_name(std::uint32_t exception) {
-  constexpr std::array<std::string_view, 7> names{"", "", "NMI", "HardFault", "MemManage", "BusFault", "UsageFault"};
-  return exception < names.size() ? names[exception] : "fault";
-}
 
 }  // namespace
 
@@ -42,7 +35,7 @@ extern "C" [[noreturn, gnu::used]] void duet_stm32mp15_fault(const ExceptionFram
   duet::stm32mp15::record_fault(last_fault, exception, status, frame);
 
   duet::TextBuffer<200> report;
-  report.append("fatal: ").append(fault_name(exception)).append(" (exception ").append(exception);
+  report.append("fatal: ").append(duet::cortex_m::exception_name(exception)).append(" (exception ").append(exception);
   report.append("), CFSR ").append_hex(last_fault.cfsr).append(", HFSR ").append_hex(last_fault.hfsr);
   report.append(", MMFAR ").append_hex(last_fault.mmfar).append(", BFAR ").append_hex(last_fault.bfar);
   report.append(", PC ").append_hex(last_fault.pc).append(", LR ").append_hex(last_fault.lr);

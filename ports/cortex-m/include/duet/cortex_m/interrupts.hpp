@@ -2,6 +2,7 @@
 // Interrupt control of the Cortex-M core and its NVIC (ARMv7-M Architecture Reference Manual, B3.4).
 
 #include <cstdint>
+#include <string_view>
 
 #include "duet/cortex_m/registers.hpp"
 
@@ -63,6 +64,9 @@ class InterruptMask {
  private:
   std::uint32_t saved_primask_ = 0;
 };
+
+// The name of system exception `number` ("HardFault"), or "interrupt" for a device interrupt (16 and above).
+std::string_view exception_name(std::uint32_t number);
 
 // The exception being handled: 0 in thread mode, 1-15 for system exceptions, 16 + n for device interrupt n.
 inline std::uint32_t active_exception() {
