@@ -66,14 +66,12 @@ chip::AdcSampler<battery_sample_capacity> battery_adc{chip::adc1_base, chip::adc
 constexpr hardware::Pin imu_chip_select = hardware::pin("PE7");
 
 // The motor driver's standby and direction inputs low (TB6612FNG: standby, outputs off), the PWM off.
-constexpr auto gpio_of = [](hardware::Pin pin) { return chip::gpio_base(pin.port); };
-constexpr std::array safe_pins{
-    chip::SafePin{gpio_of(hardware::pin("PA12")), hardware::pin("PA12").number, false},  // MTR_STBY
-    chip::SafePin{gpio_of(hardware::pin("PE9")), hardware::pin("PE9").number, false},    // MTRL_P
-    chip::SafePin{gpio_of(hardware::pin("PD1")), hardware::pin("PD1").number, false},    // MTRL_N
-    chip::SafePin{gpio_of(hardware::pin("PE10")), hardware::pin("PE10").number, false},  // MTRR_P
-    chip::SafePin{gpio_of(hardware::pin("PD14")), hardware::pin("PD14").number, false},  // MTRR_N
-};
+constexpr chip::SafePin low(hardware::Pin pin) { return {chip::gpio_base(pin.port), pin.number, false}; }
+constexpr std::array safe_pins{low(hardware::pin("PA12")),   // MTR_STBY
+                               low(hardware::pin("PE9")),    // MTRL_P
+                               low(hardware::pin("PD1")),    // MTRL_N
+                               low(hardware::pin("PE10")),   // MTRR_P
+                               low(hardware::pin("PD14"))};  // MTRR_N
 constexpr std::array safe_timers{pwm_timer};
 
 // What the capture handlers took, as the model reads it: [count, edge] (1 rising, 0 falling).
@@ -116,7 +114,7 @@ void start_pins() {
   using hardware::pin;
   // Outputs, low first (the motor driver in standby, TRIG and FSYNC idle), then the IMU's chip select high (idle).
   constexpr std::array outputs{pin("PA12"), pin("PE9"),  pin("PD1"), pin("PE10"),
-                               pin("PD14"), pin("PE11"), pin("PE1"), pin("PE7")};
+                               pin("PD14"), pin("PE11"), pin("PE1"), imu_chip_select};
   for (const hardware::Pin output : outputs) {
     hardware::gpio_write(output, false);
     chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number);
@@ -130,7 +128,7 @@ void start_pins() {
     hardware::Pin pin;
     unsigned function;
   } alternates[] = {{pin("PE13"), 1}, {pin("PE14"), 1}, {pin("PG8"), 1}, {pin("PD15"), 2},
-                    {pin("PH11"), 2}, {pin("PF7"), 5},  {pin("PF8"), 5}, {pin("PF9"), 5}};
+                    {echo_pin, 2},    {pin("PF7"), 5},  {pin("PF8"), 5}, {pin("PF9"), 5}};
   for (const auto& alternate : alternates) {
     chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number, alternate.function);
   }
@@ -166,20 +164,16 @@ void start_imu_transfer(std::span<const double> values) {
   if (!imu_bus.transfer(std::span{bytes}.first(count))) hardware::gpio_write(imu_chip_select, true);
 }
 
-void read_imu_bytes(std::span<double> values) {
-  const std::span<const std::uint8_t> received = imu_bus.received();
-  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < received.size() ? received[k] : 0.0;
+// What a driver's DMA buffer holds, as the model reads it: zeros beyond it.
+template <typename Element>
+void read_buffer(std::span<const Element> buffer, std::span<double> values) {
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < buffer.size() ? buffer[k] : 0.0;
 }
 
 // The model's AdcStart block: `count` conversions, ignored while a sequence runs (as the simulated robot does).
 void start_battery_samples(double count) {
   if (!(count >= 1.0 && count <= static_cast<double>(battery_sample_capacity))) return;
   (void)battery_adc.start(static_cast<std::uint32_t>(count));
-}
-
-void read_battery_samples(std::span<double> values) {
-  const std::span<const std::uint16_t> samples = battery_adc.samples();
-  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < samples.size() ? samples[k] : 0.0;
 }
 
 bool start_timers() {
@@ -268,9 +262,9 @@ void read(std::string_view resource, std::span<double> values) {
   } else if (resource == "capture:TIM5/2") {
     read_capture(echo, values);
   } else if (resource == "spi:SPI5") {
-    read_imu_bytes(values);
+    read_buffer(imu_bus.received(), values);
   } else if (resource == "adc:ADC1/6") {
-    read_battery_samples(values);
+    read_buffer(battery_adc.samples(), values);
   } else if (resource == "ipc:app") {
     balbot::firmware::receive_from_linux(values);
   } else {
