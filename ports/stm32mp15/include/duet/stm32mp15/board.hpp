@@ -1,6 +1,6 @@
 #pragma once
-// The STM32MP15's Cortex-M4 (numbers from shared/facts/stm32mp15.md and RM0436): its clock, and the device
-// interrupt numbers duet uses (the M4's exception number is 16 + these).
+// The STM32MP15's Cortex-M4 (numbers from shared/facts/stm32mp15.md and RM0436): its clocks, and its device
+// interrupts by name and number (the M4's exception number is 16 + these).
 
 #include <array>
 #include <iterator>
@@ -17,47 +17,6 @@ inline constexpr unsigned timer_clock_hz = 209'000'000;
 inline constexpr unsigned spi5_kernel_clock_hz = 104'500'000;
 inline constexpr unsigned adc_kernel_clock_hz = 24'000'000;
 inline constexpr unsigned device_interrupt_count = 150;
-
-namespace interrupt {
-inline constexpr unsigned exti0 = 6;  // EXTI1-4 follow: 7-10
-inline constexpr unsigned adc1 = 18;
-inline constexpr unsigned exti5 = 23;
-inline constexpr unsigned tim1_update = 25;
-inline constexpr unsigned tim1_capture_compare = 27;
-inline constexpr unsigned tim2 = 28;
-inline constexpr unsigned tim4 = 30;
-inline constexpr unsigned exti10 = 40;
-inline constexpr unsigned exti11 = 42;
-inline constexpr unsigned tim5 = 50;
-inline constexpr unsigned tim6 = 54;
-inline constexpr unsigned tim7 = 55;
-inline constexpr unsigned dma2_stream2 = 58;
-inline constexpr unsigned dma2_stream3 = 59;
-inline constexpr unsigned dma2_stream4 = 60;
-inline constexpr unsigned exti6 = 64;
-inline constexpr unsigned exti7 = 65;
-inline constexpr unsigned exti8 = 66;
-inline constexpr unsigned exti9 = 67;
-inline constexpr unsigned exti12 = 76;
-inline constexpr unsigned exti13 = 77;
-inline constexpr unsigned spi5 = 85;
-inline constexpr unsigned dmamux1_overrun = 102;
-inline constexpr unsigned ipcc_rx1 = 103;
-inline constexpr unsigned ipcc_tx1 = 104;
-inline constexpr unsigned exti14 = 121;
-inline constexpr unsigned hsem_it2 = 125;
-inline constexpr unsigned exti15 = 127;
-}  // namespace interrupt
-
-// The device interrupt of EXTI line `line` (0-15): each line has its own.
-constexpr unsigned exti_interrupt(unsigned line) {
-  constexpr unsigned lines[16] = {
-      interrupt::exti0,     interrupt::exti0 + 1, interrupt::exti0 + 2, interrupt::exti0 + 3,
-      interrupt::exti0 + 4, interrupt::exti5,     interrupt::exti6,     interrupt::exti7,
-      interrupt::exti8,     interrupt::exti9,     interrupt::exti10,    interrupt::exti11,
-      interrupt::exti12,    interrupt::exti13,    interrupt::exti14,    interrupt::exti15};
-  return lines[line & 15U];
-}
 
 // Every device interrupt with a peripheral, by its name in RM0436's NVIC table (ST's CMSIS names without _IRQn):
 // the vector table's handlers are these names with _IRQHandler. The numbers missing (4, 99, 143, 148) are wired to
@@ -121,49 +80,36 @@ consteval unsigned interrupt_by_name(std::string_view name) {
   return detail::no_such_interrupt_on_stm32mp15();
 }
 
+// The table against shared/facts/stm32mp15.md's numbers, which come from another source (RM0436's text).
 static_assert(
     []() consteval {
       constexpr struct {
         std::string_view name;
         unsigned number;
-      } listed[] = {{"ADC1", interrupt::adc1},
-                    {"TIM1_UP", interrupt::tim1_update},
-                    {"TIM1_CC", interrupt::tim1_capture_compare},
-                    {"TIM2", interrupt::tim2},
-                    {"TIM4", interrupt::tim4},
-                    {"TIM5", interrupt::tim5},
-                    {"TIM6", interrupt::tim6},
-                    {"TIM7", interrupt::tim7},
-                    {"DMA2_Stream2", interrupt::dma2_stream2},
-                    {"DMA2_Stream3", interrupt::dma2_stream3},
-                    {"DMA2_Stream4", interrupt::dma2_stream4},
-                    {"SPI5", interrupt::spi5},
-                    {"DMAMUX1_OVR", interrupt::dmamux1_overrun},
-                    {"IPCC_RX1", interrupt::ipcc_rx1},
-                    {"IPCC_TX1", interrupt::ipcc_tx1},
-                    {"HSEM_IT2", interrupt::hsem_it2},
-                    {"EXTI0", exti_interrupt(0)},
-                    {"EXTI1", exti_interrupt(1)},
-                    {"EXTI2", exti_interrupt(2)},
-                    {"EXTI3", exti_interrupt(3)},
-                    {"EXTI4", exti_interrupt(4)},
-                    {"EXTI5", exti_interrupt(5)},
-                    {"EXTI6", exti_interrupt(6)},
-                    {"EXTI7", exti_interrupt(7)},
-                    {"EXTI8", exti_interrupt(8)},
-                    {"EXTI9", exti_interrupt(9)},
-                    {"EXTI10", exti_interrupt(10)},
-                    {"EXTI11", exti_interrupt(11)},
-                    {"EXTI12", exti_interrupt(12)},
-                    {"EXTI13", exti_interrupt(13)},
-                    {"EXTI14", exti_interrupt(14)},
-                    {"EXTI15", exti_interrupt(15)}};
-      for (const auto& [name, number] : listed) {
+      } facts[] = {{"ADC1", 18},         {"TIM1_UP", 25},   {"TIM1_CC", 27}, {"TIM2", 28},         {"TIM4", 30},
+                   {"TIM5", 50},         {"TIM6", 54},      {"TIM7", 55},    {"DMA2_Stream2", 58}, {"DMA2_Stream3", 59},
+                   {"DMA2_Stream4", 60}, {"SPI5", 85},      {"ADC2", 90},    {"DMAMUX1_OVR", 102}, {"IPCC_RX1", 103},
+                   {"IPCC_TX1", 104},    {"HSEM_IT2", 125}, {"EXTI0", 6},    {"EXTI1", 7},         {"EXTI2", 8},
+                   {"EXTI3", 9},         {"EXTI4", 10},     {"EXTI5", 23},   {"EXTI6", 64},        {"EXTI7", 65},
+                   {"EXTI8", 66},        {"EXTI9", 67},     {"EXTI10", 40},  {"EXTI11", 42},       {"EXTI12", 76},
+                   {"EXTI13", 77},       {"EXTI14", 121},   {"EXTI15", 127}};
+      for (const auto& [name, number] : facts) {
         if (interrupt_by_name(name) != number) return false;
       }
       return true;
     }(),
-    "the interrupt numbers above disagree with RM0436's table");
+    "named_interrupts disagrees with the facts' interrupt numbers");
+
+// The lines duet's own code names.
+namespace interrupt {
+inline constexpr unsigned tim1_capture_compare = interrupt_by_name("TIM1_CC");
+inline constexpr unsigned tim2 = interrupt_by_name("TIM2");
+inline constexpr unsigned tim7 = interrupt_by_name("TIM7");
+inline constexpr unsigned exti8 = interrupt_by_name("EXTI8");
+inline constexpr unsigned spi5 = interrupt_by_name("SPI5");
+inline constexpr unsigned ipcc_rx1 = interrupt_by_name("IPCC_RX1");
+inline constexpr unsigned hsem_it2 = interrupt_by_name("HSEM_IT2");
+}  // namespace interrupt
 
 // Lines that nothing the M4 can see ever raises, for software to pend (cortex_m::set_interrupt_pending): the
 // executive's slower rates and the RPMsg transport's hand-over of the application's messages. Their handlers are
