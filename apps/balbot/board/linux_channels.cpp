@@ -48,15 +48,17 @@ void prepare_linux_channels() {
 
 bool poll_linux() {
   if (link.started()) return true;
-  if (!link.try_start()) return false;
+  if (!link.try_start()) {
+    static bool said = false;  // it is polled between every two ticks
+    if (link.problem() == chip::LinkProblem::bad_vring && !said) {
+      said = true;
+      cortex_m::console_write("linux link: the resource table's vrings are not usable; waiting for Linux\n");
+    }
+    return false;
+  }
   cortex_m::set_interrupt_pending(chip::interrupt::ipcc_rx1);  // serve() announces the channels there, not here
   cortex_m::console_write("linux link: up, XCP on ttyRPMSG0, application channel on ttyRPMSG1\n");
   return true;
-}
-
-LinuxChannelCounters linux_channel_counters() {
-  return {xcp_channel.bytes_received(), xcp_channel.bytes_sent(), application_channel.bytes_received(),
-          application_channel.bytes_sent(), firmware::telemetry_dropped()};
 }
 
 }  // namespace balbot::board

@@ -1,22 +1,11 @@
 #pragma once
 // XCP and the application channel to Linux over RPMsg (linux_channels.cpp).
 
-#include <cstdint>
-
 namespace balbot::board {
 
 // IPCC's clock and its interrupt at the lowest priority. Call before enabling interrupts.
 void prepare_linux_channels();
 // From the background loop: brings the link up once Linux's RPMsg driver is ready; true from then on.
 bool poll_linux();
-
-struct LinuxChannelCounters {
-  std::uint32_t xcp_bytes_received;
-  std::uint32_t xcp_bytes_sent;
-  std::uint32_t application_bytes_received;
-  std::uint32_t application_bytes_sent;
-  std::uint32_t telemetry_dropped;
-};
-LinuxChannelCounters linux_channel_counters();
 
 }  // namespace balbot::board
