@@ -3,8 +3,6 @@
 // hardware blocks reach (robot_peripherals.cpp routes its resources to the drivers), and what each interrupt
 // task's handler clears before the model runs.
 
-#include <cstdint>
-
 namespace balbot::board {
 
 // Clocks, pins, timers, the IMU's SPI with its DMA streams, the battery's ADC, the IMU's EXTI line, and the outputs'
