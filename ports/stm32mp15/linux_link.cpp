@@ -18,11 +18,12 @@ bool usable(const volatile VringResource& ring) {
 }  // namespace
 
 LinuxLink::LinuxLink(const LinuxLinkConfiguration& configuration)
-    : configuration_(configuration),
-      endpoints_{configuration.xcp->endpoint("rpmsg-tty", xcp_address),
-                 configuration.application->endpoint("rpmsg-tty", application_address)},
-      device_({&transmit_, &receive_, configuration.memory_at, ring, endpoints_}) {
+    : configuration_(configuration), device_(device_configuration()) {
   doorbells = &configuration_;
+}
+
+rpmsg::DeviceConfiguration LinuxLink::device_configuration() {
+  return {&transmit_, &receive_, configuration_.memory_at, ring, endpoints_};
 }
 
 void LinuxLink::ring(unsigned vring) {
@@ -51,8 +52,7 @@ bool LinuxLink::try_start() {
   // A new session (the first, or after Linux detached): announced again, and Linux's endpoints learnt again.
   endpoints_[0] = configuration_.xcp->endpoint("rpmsg-tty", xcp_address);
   endpoints_[1] = configuration_.application->endpoint("rpmsg-tty", application_address);
-  device_ = rpmsg::Device{{&transmit_, &receive_, configuration_.memory_at, ring, endpoints_}};
-  announced_ = false;
+  device_ = rpmsg::Device{device_configuration()};
   configuration_.ipcc.start(1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown |
                             1U << ipcc_channel::detach);
   problem_ = LinkProblem::none;
@@ -78,7 +78,7 @@ void LinuxLink::serve() {
   for (const unsigned channel : {ipcc_channel::vring0, ipcc_channel::vring1}) {
     if ((pending & 1U << channel) != 0) ipcc.acknowledge(channel);
   }
-  if (!announced_) announced_ = device_.announce();
+  (void)device_.announce();  // what it has not announced yet, if Linux has buffers for it; nothing once done
   device_.receive();
   configuration_.xcp->pump(device_, endpoints_[0]);
   configuration_.application->pump(device_, endpoints_[1]);

@@ -51,21 +51,20 @@ class LinuxLink {
   // protocols, what they queued sent as far as Linux has buffers.
   void serve();
 
-  [[nodiscard]] const rpmsg::Device& device() const { return device_; }
   [[nodiscard]] std::uint32_t shutdown_requests() const { return shutdown_requests_; }
   [[nodiscard]] std::uint32_t detaches() const { return detaches_; }
 
  private:
   static void ring(unsigned vring);
+  [[nodiscard]] rpmsg::DeviceConfiguration device_configuration();
 
   LinuxLinkConfiguration configuration_;
   rpmsg::DeviceVring transmit_;
   rpmsg::DeviceVring receive_;
-  rpmsg::Endpoint endpoints_[2];
+  rpmsg::Endpoint endpoints_[2]{};  // each session's, from try_start
   rpmsg::Device device_;
   volatile bool started_ = false;  // the background loop sets it, the doorbell's handler reads it
-  bool announced_ = false;
-  bool detached_ = false;  // Linux detached: wait for its reset of the device before the next session
+  bool detached_ = false;          // Linux detached: wait for its reset of the device before the next session
   LinkProblem problem_ = LinkProblem::waiting_for_linux;
   std::uint32_t shutdown_requests_ = 0;
   std::uint32_t detaches_ = 0;
