@@ -1,0 +1,119 @@
+import { element, replaceChildren } from '../../dom.js';
+import { formatSize, taskRows } from './generated_tables.js';
+
+// Generated: what code generation makes of the editor's text (the files, to read), the task
+// table and the schedulability verdict.
+export function createGeneratePanel({ element: root, hub, connection, getText }) {
+  let files = [];
+  let shownFile = null; // its name, kept across generations while it still exists
+  let waiting = false;
+
+  root.classList.add('studio-panel', 'generate-panel');
+  const generateButton = element('button', { type: 'button', class: 'primary', onclick: generate }, 'Generate');
+  const verdict = element('strong', { class: 'verdict', hidden: true });
+  const message = element('span', { class: 'panel-message', role: 'status' });
+  const fileList = element('ul', { class: 'file-list', 'aria-label': 'generated files' });
+  const fileText = element('pre', { class: 'file-text' });
+  const taskTable = element('div', { class: 'task-table' });
+  const report = element('pre', { class: 'report' });
+  root.replaceChildren(
+    element('div', { class: 'panel-toolbar' }, generateButton, verdict, message),
+    element(
+      'div',
+      { class: 'generated' },
+      element('section', { class: 'files' }, element('h3', {}, 'Files'), fileList),
+      element('section', { class: 'file' }, fileText),
+      element('section', { class: 'schedule' }, element('h3', {}, 'Tasks'), taskTable, element('h3', {}, 'Schedulability'), report),
+    ),
+  );
+  fileText.textContent = 'Generate to see the code made of the text in the editor.';
+
+  function say(text, tone = 'muted') {
+    message.textContent = text;
+    message.className = `panel-message ${tone}`;
+  }
+
+  function generate() {
+    if (!connection.send({ type: 'generate', text: getText() })) return say('not connected to duet studio', 'bad');
+    waiting = true;
+    generateButton.disabled = true;
+    say('generating…');
+  }
+
+  function finished() {
+    waiting = false;
+    generateButton.disabled = false;
+  }
+
+  hub.on('generated', (generated) => {
+    finished();
+    say('');
+    files = generated.files ?? [];
+    if (!files.some((file) => file.name === shownFile)) shownFile = files[0]?.name ?? null;
+    showFiles();
+    showTasks(generated.tasks);
+    showVerdict(generated.schedulability);
+  });
+
+  hub.on('error', (error) => {
+    if (error.request !== 'generate') return;
+    if (waiting) finished();
+    // What shows below stays the last generation that worked; say so rather than clear it.
+    say(`generation failed: ${error.message}${files.length > 0 ? ' (below: the last generation that worked)' : ''}`, 'bad');
+  });
+
+  function showFiles() {
+    replaceChildren(
+      fileList,
+      files.map((file) =>
+        element(
+          'li',
+          {},
+          element(
+            'button',
+            {
+              type: 'button',
+              'aria-current': file.name === shownFile ? 'true' : undefined,
+              onclick: () => {
+                shownFile = file.name;
+                showFiles();
+              },
+            },
+            element('span', { class: 'file-name' }, file.name),
+            element('span', { class: 'file-size muted' }, formatSize(file.text)),
+          ),
+        ),
+      ),
+    );
+    const file = files.find((candidate) => candidate.name === shownFile);
+    fileText.textContent = file ? file.text : 'No files were generated.';
+    fileText.scrollTop = 0;
+  }
+
+  function showTasks(tasks) {
+    const rows = taskRows(tasks);
+    if (rows.length === 0) return replaceChildren(taskTable, element('p', { class: 'muted' }, 'no tasks'));
+    replaceChildren(
+      taskTable,
+      element(
+        'table',
+        {},
+        element('thead', {}, element('tr', {}, ['task', 'kind', 'period or interrupt', 'blocks'].map((heading) => element('th', {}, heading)))),
+        element('tbody', {}, rows.map((cells) => element('tr', {}, cells.map((cell) => element('td', {}, cell))))),
+      ),
+    );
+  }
+
+  function showVerdict(schedulability) {
+    verdict.hidden = !schedulability;
+    if (!schedulability) {
+      report.textContent = '';
+      return;
+    }
+    verdict.textContent = schedulability.verdict ?? (schedulability.schedulable ? 'schedulable' : 'not schedulable');
+    verdict.className = `verdict ${schedulability.schedulable ? 'good' : 'bad'}`;
+    report.textContent = schedulability.report ?? '';
+  }
+
+  return {};
+}
