@@ -1,0 +1,18 @@
+import { element, replaceChildren } from '../../dom.js';
+import { legendEntries } from './task_colours.js';
+
+// The colour key: each task's name and rate (period, or interrupt and priority) beside its colour.
+export function createLegend() {
+  const root = element('div', { class: 'diagram-legend' });
+  return {
+    root,
+    update(tasks, blockTasks) {
+      const rows = legendEntries(tasks, blockTasks);
+      replaceChildren(root, rows.map((row) => element('div', { class: 'legend-row', 'data-task': String(row.key) },
+        element('span', { class: 'legend-swatch', style: `background:${row.colour}` }),
+        element('span', { class: 'legend-name' }, row.name),
+        row.rate ? element('span', { class: 'legend-rate' }, row.rate) : null)));
+      root.hidden = rows.length === 0;
+    },
+  };
+}
