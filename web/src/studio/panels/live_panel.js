@@ -3,6 +3,7 @@ import { connectSignalFeed } from '../../signal_feed.js';
 import { ScopeView } from '../../scope_view.js';
 import { element } from '../../dom.js';
 import { formatCounter, formatNumber } from '../../number_format.js';
+import { executiveSummary } from '../../status_tables.js';
 import { LiveValues } from './live_values.js';
 import { SignalChooser } from './signal_chooser.js';
 import { itemsNamed } from './vector_items.js';
@@ -14,6 +15,8 @@ const live_update_interval_ms = 50;
 const figures_interval_ms = 1000;
 const scope_window_s = 10;
 const default_address = 'tcp://127.0.0.1:5555';
+// Of the executive's account, what fits the toolbar.
+const executive_figures = new Set(['core load', 'overruns']);
 // The server's answers to these requests are this panel's to show.
 const own_requests = new Set(['connect', 'disconnect', 'set', 'describe', 'status']);
 
@@ -39,6 +42,7 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
   const stateBadge = element('span', { class: 'external-state', role: 'status' });
   const problem = element('span', { class: 'bad problem' });
   const figures = element('span', { class: 'figures muted' });
+  const executive = element('span', { class: 'muted' });
   const message = element('p', { class: 'panel-message', role: 'status' });
   const chooserNode = element('div');
   const plotNode = element('div', { class: 'panel-plot' });
@@ -56,6 +60,7 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
     disconnectButton,
     stateBadge,
     problem,
+    executive,
     figures,
   );
   root.replaceChildren(form, message, element('div', { class: 'panel-scope-head' }, element('span', { class: 'muted' }, 'Scope (click a wire to add):'), chooserNode), plotNode);
@@ -158,6 +163,14 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
   hub.on('channel', (channel) => {
     if (channel.open === false) say('The target went away; the values shown are the last it sent.', 'warn');
     else say('');
+  });
+
+  // The target's executive in a few words (the dashboard's Status page has the whole account).
+  hub.on('status', (status) => {
+    executive.textContent = executiveSummary(status.executive)
+      .filter(([label]) => executive_figures.has(label))
+      .map(([label, value]) => `${label} ${formatCounter(value)}`)
+      .join(', ');
   });
 
   hub.on('error', (error) => {
