@@ -143,12 +143,12 @@ test('live: connect, the wires get values at 20 Hz, the scope plots, parameters 
 test('live: a hidden tab draws nothing; closing ends live mode and the updates', { skip: no_chromium }, async () => {
   const frames = await page.evaluate(async () => {
     const node = document.getElementById('live');
-    node.style.display = 'none';
+    node.hidden = true; // as the shell's bottom tabs hide a panel
     await new Promise((resolve) => setTimeout(resolve, 200));
     const before = window.harness.live.stats.frames;
     await new Promise((resolve) => setTimeout(resolve, 500));
     const hidden = window.harness.live.stats.frames - before;
-    node.style.display = '';
+    node.hidden = false;
     await new Promise((resolve) => setTimeout(resolve, 500));
     return { hidden, shown: window.harness.live.stats.frames - before - hidden };
   });
