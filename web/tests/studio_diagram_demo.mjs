@@ -71,6 +71,13 @@ try {
     check(blocks === stats.blocks && blocks === model.diagram.root.blocks.length, `drew ${blocks} blocks, stats say ${stats.blocks}, the model has ${model.diagram.root.blocks.length}`);
     check(wires === stats.wires, `drew ${wires} wires, stats say ${stats.wires}`);
     await page.screenshot({ path: path.join(options.shots, 'top.png') });
+    // At scale 1 too: the fitted overview of a big system is too small to judge text by.
+    await page.evaluate(() => {
+      const scale = Number(/scale\(([^)]+)\)/.exec(document.querySelector('.viewport').getAttribute('transform'))[1]);
+      window.view.zoomBy(1 / scale);
+    });
+    await page.screenshot({ path: path.join(options.shots, 'top_scale1.png') });
+    await page.evaluate(() => window.view.fit());
     return { wallMs: wall, ...stats };
   });
 
@@ -139,6 +146,65 @@ try {
     await page.waitForTimeout(50);
     await page.screenshot({ path: path.join(options.shots, 'find.png') });
     return found;
+  });
+
+  await step('connect_by_drag', async () => {
+    // From the first block with an output to another block with an input, port to port.
+    const blocks = model.diagram.root.blocks;
+    const source = blocks.find((block) => block.outputs?.length);
+    const target = blocks.find((block) => block !== source && block.inputs?.some((port) => port.kind === 'data'));
+    const input = target.inputs.find((port) => port.kind === 'data');
+    await page.evaluate(() => window.view.showSystem(''));
+    await page.evaluate(({ s, t }) => window.view.select({ kind: 'block', id: s }), { s: source.id });
+    const from = await page.locator(`g.block[data-id="${source.id}"] .port[data-port="out:${source.outputs[0].port}"] .port-hit`).boundingBox();
+    await page.mouse.move(from.x + from.width / 2, from.y + from.height / 2);
+    await page.mouse.down();
+    await page.mouse.move(from.x + 40, from.y + 40, { steps: 4 });
+    check(await page.locator('.rubber-band').count() === 1, 'no rubber band while dragging');
+    await page.evaluate((id) => window.view.select({ kind: 'block', id }), target.id);
+    const to = await page.locator(`g.block[data-id="${target.id}"] .port[data-port="in:${input.port}"] .port-hit`).boundingBox();
+    await page.mouse.move(to.x + to.width / 2, to.y + to.height / 2, { steps: 6 });
+    await page.mouse.up();
+    const connect = await page.evaluate(() => window.events.filter(([kind]) => kind === 'connect').at(-1)?.[1]);
+    check(connect && connect.from.block === source.id && connect.to.block === target.id && connect.to.port === input.port, `connect event: ${JSON.stringify(connect)}`);
+    return connect;
+  });
+
+  await step('click_wire', async () => {
+    const wire = model.diagram.root.wires.find((candidate) => candidate.source && candidate.targets.length);
+    await page.evaluate((id) => window.view.select({ kind: 'wire', id }), wire.id);
+    const line = page.locator(`g.wire[data-id="${wire.id}"] .wire-line`).first();
+    const box = await line.boundingBox();
+    await page.evaluate(() => window.view.select(null));
+    // The middle of a bounding box may miss an L-shaped line: click where the path is.
+    const point = await line.evaluate((path) => {
+      const at = path.getPointAtLength(path.getTotalLength() / 2);
+      const matrix = path.getScreenCTM();
+      return { x: at.x * matrix.a + matrix.e, y: at.y * matrix.d + matrix.f };
+    });
+    await page.mouse.click(point.x, point.y);
+    const selected = await page.evaluate(() => window.events.filter(([kind]) => kind === 'select').at(-1)?.[1]);
+    check(selected?.kind === 'wire' && selected.id === wire.id, `clicked ${wire.id} near ${JSON.stringify(box)}, selected ${JSON.stringify(selected)}`);
+    check(await page.locator(`g.wire.selected[data-id="${wire.id}"]`).count() === 1, 'the wire is not highlighted');
+    return selected.id;
+  });
+
+  await step('edit_keeps_positions', async () => {
+    const edited = structuredClone(model.diagram);
+    const source = edited.root.blocks.find((block) => block.outputs?.length && !block.system);
+    const signal = source.outputs[0].signal;
+    edited.root.blocks.push({ id: 'added_by_demo', name: 'added_by_demo', type: 'Gain', task: source.task, inputs: [{ port: 'u', signal, kind: 'data' }], outputs: [], parameters: [] });
+    edited.root.wires.find((wire) => wire.signal === signal).targets.push({ block: 'added_by_demo', port: 'u' });
+    const before = await page.evaluate(() => Object.fromEntries([...document.querySelectorAll('g.block')].map((g) => [g.dataset.id, g.getAttribute('transform')])));
+    await page.evaluate(({ diagram, library, tasks }) => { window.view.setStale(true); return window.view.setModel(diagram, library, tasks); }, { diagram: edited, library, tasks: model.tasks });
+    const after = await page.evaluate(() => Object.fromEntries([...document.querySelectorAll('g.block')].map((g) => [g.dataset.id, g.getAttribute('transform')])));
+    const moved = Object.keys(before).filter((id) => before[id] !== after[id]);
+    check(moved.length === 0, `moved: ${moved.join(', ')}`);
+    check(after.added_by_demo, 'the added block is not drawn');
+    check(await page.locator('.duet-diagram.stale').count() === 1, 'not dimmed when stale');
+    await page.screenshot({ path: path.join(options.shots, 'edited_stale.png') });
+    await page.evaluate(() => window.view.setStale(false));
+    return { layoutMs: (await page.evaluate(() => window.view.stats())).layoutMs };
   });
 
   await step('relayout', () => page.evaluate(async () => {

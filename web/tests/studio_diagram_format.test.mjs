@@ -45,9 +45,10 @@ test('task colours: periodic red, green, blue fastest first; interrupts apart; c
 test('the legend lists every task with its rate, then constant and not known when used', () => {
   assert.equal(taskRateText(tasks[1]), '10 ms');
   assert.equal(taskRateText({ kind: 'periodic', period_us: 500 }), '0.5 ms');
+  assert.equal(taskRateText({ kind: 'interrupt', name: 'receive', interrupt: 'IPCC_RX1', priority: 9 }), 'IPCC_RX1 · priority 9');
   const rows = legendEntries(tasks, [0, 'constant', null]);
   assert.deepEqual(rows.map((row) => [row.name, row.rate]), [
-    ['base', '1 ms'], ['slow', '10 ms'], ['EXTI8', 'EXTI8 · priority 5'], ['TIM1', 'TIM1 · priority 2'],
+    ['base', '1 ms'], ['slow', '10 ms'], ['EXTI8', 'priority 5'], ['TIM1', 'priority 2'],
     ['constant', 'at initialisation'], ['not known', ''],
   ]);
   assert.equal(legendEntries(tasks, [0, 1]).length, 4);

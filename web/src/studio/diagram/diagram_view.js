@@ -28,7 +28,7 @@ export function createDiagramView(container, callbacks = {}) {
   };
 
   const svg = svgElement('svg', { class: 'diagram-canvas', role: 'img', 'aria-label': 'block diagram' },
-    svgElement('defs', {}, svgElement('marker', { id: 'diagram-arrow', viewBox: '0 0 8 8', refX: 8, refY: 4, markerWidth: 7, markerHeight: 7, orient: 'auto' },
+    svgElement('defs', {}, svgElement('marker', { id: 'diagram-arrow', viewBox: '0 0 8 8', refX: 8, refY: 4, markerWidth: 8, markerHeight: 8, markerUnits: 'userSpaceOnUse', orient: 'auto' },
       svgElement('path', { d: 'M0,0L8,4L0,8Z', class: 'arrow-head' }))));
   const viewport = svgElement('g', { class: 'viewport' });
   const overlay = svgElement('g', { class: 'overlay' });

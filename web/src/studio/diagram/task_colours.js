@@ -28,9 +28,10 @@ function periodText(periodUs) {
   return `${Number((periodUs / 1000).toPrecision(6))} ms`;
 }
 
-// What a task runs on, in words: "1 ms" or "EXTI8 · priority 5".
+// What a task runs on, in words: "1 ms" or "EXTI8 · priority 5" ("priority 5" when the task is
+// named after its interrupt already).
 export function taskRateText(task) {
-  if (task.kind === 'interrupt') return `${task.interrupt} · priority ${task.priority}`;
+  if (task.kind === 'interrupt') return task.name === task.interrupt ? `priority ${task.priority}` : `${task.interrupt} · priority ${task.priority}`;
   return periodText(task.period_us);
 }
 
