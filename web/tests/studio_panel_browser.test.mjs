@@ -195,6 +195,11 @@ test('simulation: Run sends the request, progress shows, the result is plotted, 
   await page.evaluate(() => window.harness.hub.emit('error', { type: 'error', request: 'simulate', message: 'unknown plant' }));
   assert.match(await page.$eval('#simulation .panel-message', (node) => node.textContent), /unknown plant/);
   assert.equal(await page.$eval('#simulation button.primary', (button) => button.disabled), false);
+  // The page's socket lost during a run: Run is offered again.
+  await page.click('#simulation button.primary');
+  await page.evaluate(() => window.harness.hub.emit('link', { name: 'waiting', retryInMs: 500 }));
+  assert.equal(await page.$eval('#simulation button.primary', (button) => button.disabled), false);
+  assert.match(await page.$eval('#simulation .panel-message', (node) => node.textContent), /lost/);
 });
 
 test('generated: the files, a file text, the tasks, the verdict', { skip: no_chromium }, async () => {

@@ -62,6 +62,13 @@ export function createGeneratePanel({ element: root, hub, connection, getText })
     say(`generation failed: ${error.message}${files.length > 0 ? ' (below: the last generation that worked)' : ''}`, 'bad');
   });
 
+  // The page's socket dropped: the answer cannot come any more.
+  hub.on('link', (link) => {
+    if (link.name === 'connected' || !waiting) return;
+    finished();
+    say('the connection to duet studio was lost; generate again', 'bad');
+  });
+
   function showFiles() {
     replaceChildren(
       fileList,

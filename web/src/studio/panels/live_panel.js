@@ -125,7 +125,14 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
     root.dataset.external = external.state;
   }
 
-  hub.on('external', (next) => {
+  hub.on('external', setExternal);
+  // Without the page's own socket to duet studio nothing of the target arrives: the link shows
+  // off until the server says otherwise.
+  hub.on('link', (link) => {
+    if (link.name !== 'connected' && external.state !== 'off') setExternal({ state: 'off', problem: 'the connection to duet studio was lost' });
+  });
+
+  function setExternal(next) {
     const wasOpen = external.state === 'open';
     external = next;
     const open = external.state === 'open';
@@ -141,7 +148,7 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
     }
     counted = { samples: stats.samples, liveUpdates: stats.liveUpdates, atMs: 0 };
     showFigures();
-  });
+  }
 
   hub.on('description', (description) => {
     describedParameters = description.parameters ?? [];
@@ -179,6 +186,7 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
 
   showExternal();
   showFigures();
+  say("Connect to a target running this model's firmware (duet pil, or the board) to see its signals on the wires.");
 
   const panel = {
     stats,

@@ -61,6 +61,7 @@ export function createSimulationPanel({ element: root, hub, connection, getText,
   const chooser = new SignalChooser(chooserNode, { onChange: (signals) => scopeView.setSignals(signals), placeholder: 'add a signal…' });
   watchVisibility(root, (visible) => scopeView.setVisible(visible));
   showScenarioUse();
+  say('Run simulates the text in the editor, saved or not.');
 
   function say(text, tone = 'muted') {
     message.textContent = text;
@@ -117,6 +118,13 @@ export function createSimulationPanel({ element: root, hub, connection, getText,
     if (error.request !== 'simulate' && error.request !== 'cancel_simulation') return;
     if (error.request === 'simulate') showRunning(null);
     say(`simulation failed: ${error.message}`, 'bad');
+  });
+
+  // The page's socket dropped: the run's answer cannot come any more.
+  hub.on('link', (link) => {
+    if (link.name === 'connected' || running === null) return;
+    showRunning(null);
+    say('the connection to duet studio was lost during the simulation; run it again', 'bad');
   });
 
   function show(result) {
