@@ -1,5 +1,5 @@
 import { ScopeView } from '../../scope_view.js';
-import { element, replaceChildren } from '../../dom.js';
+import { element } from '../../dom.js';
 import { formatCounter, formatNumber } from '../../number_format.js';
 import { plantChoices, plant_taking_scenarios, scenarioChoices, simulateRequest } from './simulation_choices.js';
 import { resultStore, spanOf } from './result_store.js';
