@@ -224,6 +224,11 @@ export function createDiagramView(container, callbacks = {}) {
 
   return {
     setModel(diagram, library, tasks) {
+      // No diagram (the text does not read as a model): the last good drawing stays, dimmed.
+      if (!diagram?.root) {
+        container.classList.add('stale');
+        return Promise.resolve();
+      }
       state.diagram = diagram;
       state.index = indexDiagram(diagram);
       state.libraryByType = new Map((library ?? []).map((entry) => [entry.type, entry]));
