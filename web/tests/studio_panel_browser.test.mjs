@@ -160,7 +160,7 @@ test('live: a hidden tab draws nothing; closing ends live mode and the updates',
     const updates = live.stats.liveUpdates;
     await new Promise((resolve) => setTimeout(resolve, 300));
     stopDaq();
-    return { modes: diagram.modes, more: live.stats.liveUpdates - updates, connected: live.connected, state: document.querySelector('#live .external-state').textContent, problem: document.querySelector('#live .problem').textContent, write: live.write('P', 0.1) };
+    return { modes: diagram.modes, more: live.stats.liveUpdates - updates, connected: live.connected, state: document.querySelector('#live .external-state').textContent, problem: document.querySelector('#live .external-problem').textContent, write: live.write('P', 0.1) };
   });
   assert.deepEqual(closed.modes, [true, false]);
   assert.equal(closed.more, 0);

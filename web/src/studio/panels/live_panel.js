@@ -40,7 +40,7 @@ export function createLivePanel({ element: root, hub, connection, studio, view }
   const connectButton = element('button', { type: 'submit', class: 'primary' }, 'Connect');
   const disconnectButton = element('button', { type: 'button', onclick: () => send({ type: 'disconnect' }) }, 'Disconnect');
   const stateBadge = element('span', { class: 'external-state', role: 'status' });
-  const problem = element('span', { class: 'bad problem' });
+  const problem = element('span', { class: 'bad external-problem' });
   const figures = element('span', { class: 'figures muted' });
   const executive = element('span', { class: 'muted' });
   const message = element('p', { class: 'panel-message', role: 'status' });
