@@ -1,6 +1,7 @@
 #include "model_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -9,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -29,13 +31,61 @@ std::string join(const std::vector<std::string>& names) {
   return text.empty() ? "(no blocks)" : text;
 }
 
+// What a diagram of the model shows, counted from the file: the blocks it writes (subsystems apart) and, per system,
+// each signal named there (a block's port, a trigger or enable, a subsystem's port seen from inside) once.
+struct Drawn {
+  std::size_t blocks = 0;
+  std::size_t subsystems = 0;
+  std::size_t wires = 0;
+};
+
+void count_drawn(const std::vector<model::Block>& blocks, const model::Block* owner, Drawn& drawn) {
+  std::set<std::string> signals;
+  if (owner != nullptr) {
+    for (const model::Connection& port : owner->inputs) signals.insert(port.port);
+    for (const model::Connection& port : owner->outputs) signals.insert(port.port);
+  }
+  for (const model::Block& block : blocks) {
+    for (const model::Connection& connection : block.inputs) signals.insert(connection.signal);
+    for (const model::Connection& connection : block.outputs) signals.insert(connection.signal);
+    if (block.trigger.kind == model::Trigger::Kind::edge) signals.insert(block.trigger.signal);
+    if (!block.enable.empty()) signals.insert(block.enable);
+    if (block.type == "Subsystem") {
+      ++drawn.subsystems;
+      count_drawn(block.blocks, &block, drawn);
+    } else {
+      ++drawn.blocks;
+    }
+  }
+  drawn.wires += signals.size();
+}
+
+// For scripts and the studio's browser tests: what the diagram must show, and the tasks.
+std::string check_json(const model::Model& source, const model::RateAnalysis& rates) {
+  Drawn drawn;
+  count_drawn(source.blocks, nullptr, drawn);
+  nlohmann::json tasks = nlohmann::json::array();
+  for (const model::Task& task : rates.tasks) tasks.push_back({{"name", task.name}, {"blocks", task.blocks.size()}});
+  return nlohmann::json{{"name", source.name},
+                        {"blocks", drawn.blocks},
+                        {"subsystems", drawn.subsystems},
+                        {"wires", drawn.wires},
+                        {"scheduled_blocks", rates.block_rates.size()},
+                        {"tasks", tasks}}
+      .dump();
+}
+
 // Diagnostics on standard error; with none that is an error, the task table with each task's blocks in execution
-// order on standard output.
-ExitCode check(const std::string& file, Streams streams) {
+// order on standard output (or, with `json`, the counts of check_json).
+ExitCode check(const std::string& file, bool json, Streams streams) {
   const auto checked = load_checked_model(file, streams.err);  // validation, rates, then types and sizes
   if (!checked) return ExitCode::failure;
   const model::Model& source = *checked->model;
   const model::RateAnalysis rates = model::analyse_rates(source);
+  if (json) {
+    streams.out << check_json(source, rates) << '\n';
+    return ExitCode::success;
+  }
   streams.out << source.name << ": " << rates.block_rates.size() << " blocks, " << rates.tasks.size() << " tasks\n";
   for (const model::Task& task : rates.tasks) {
     streams.out << "  " << task.name << ": ";
@@ -125,6 +175,7 @@ struct ModelOptions {
   std::string file;
   std::string output;
   bool dot = false;
+  bool json = false;
   std::vector<std::string> wcet;
   std::vector<std::string> interarrival;
 };
@@ -136,6 +187,8 @@ Action define_model_command(CLI::App& command) {
   command.require_subcommand(1);
   CLI::App* check_command = command.add_subcommand("check", "Validate a model file and list its tasks");
   check_command->add_option("file", options->file, "The model file (docs/MODELS.md)")->required();
+  check_command->add_flag("--json", options->json,
+                          "Print what its diagram shows (blocks, subsystems, wires) and its tasks as JSON");
   CLI::App* render_command = command.add_subcommand("render", "Draw the block diagram as SVG (with Graphviz)");
   render_command->add_option("file", options->file, "The model file")->required();
   render_command->add_option("-o,--output", options->output, "The SVG file (default: the model's name with .svg)");
@@ -149,7 +202,7 @@ Action define_model_command(CLI::App& command) {
   return [options, render_command, tasks_command](Streams streams) {
     if (render_command->parsed()) return render(options->file, options->output, options->dot, streams);
     if (tasks_command->parsed()) return tasks(options->file, options->wcet, options->interarrival, streams);
-    return check(options->file, streams);
+    return check(options->file, options->json, streams);
   };
 }
 

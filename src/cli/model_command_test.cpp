@@ -30,6 +30,24 @@ TEST_F(ModelCommand, CheckListsTheTasksOfAValidModel) {
   EXPECT_EQ(outcome.err, "");
 }
 
+// What a diagram of it must show: each block and each signal a system names once (a subsystem's ports inside).
+TEST_F(ModelCommand, CheckCountsWhatItsDiagramShowsAsJson) {
+  write(
+      "duet_model: 1\nname: latch\nbase_period_us: 1000\nblocks:\n"
+      "  - {name: count, type: Counter, parameters: {limit: 9}, outputs: {y: n}}\n"
+      "  - {name: high, type: Compare, parameters: {operator: '>', value: 5}, inputs: {u: n}, outputs: {y: hi}}\n"
+      "  - name: keep\n    type: Subsystem\n    trigger: {edge: rising, signal: hi}\n"
+      "    inputs: {value: n}\n    outputs: {held: held}\n    blocks:\n"
+      "      - {name: copy, type: Convert, parameters: {type: double}, inputs: {u: value}, outputs: {y: held}}\n"
+      "  - {name: out, type: Outport, inputs: {u: held}}\n");
+  const Outcome outcome = run({"model", "check", "--json", file});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  // n, hi, held at the top; value and held inside keep. The edge detector is scheduled but not drawn.
+  EXPECT_EQ(outcome.out,
+            "{\"blocks\":4,\"name\":\"latch\",\"scheduled_blocks\":5,\"subsystems\":1,"
+            "\"tasks\":[{\"blocks\":5,\"name\":\"rate 1\"}],\"wires\":5}\n");
+}
+
 TEST_F(ModelCommand, CheckNamesEveryProblemAndFails) {
   write(
       "duet_model: 1\nname: blink\nbase_period_us: 100\nparameters:\n  K: 2\nblocks:\n"

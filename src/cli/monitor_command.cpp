@@ -12,7 +12,7 @@
 #include "duet/link/tcp.hpp"
 #include "duet/support/text_file.hpp"
 #include "host_port_validator.hpp"
-#include "monitor_target.hpp"
+#include "duet/monitor/monitor_target.hpp"
 #include "stop_signals.hpp"
 
 namespace duet::cli {
@@ -53,9 +53,9 @@ ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
   }
 
   boost::asio::io_context io;
-  auto monitor = MonitorTarget::create(
+  auto monitor = monitor::MonitorTarget::create(
       io,
-      MonitorOptions{
+      monitor::MonitorOptions{
           .target = target,
           .a2l = std::move(a2l).value(),
           .signals = options.signals,

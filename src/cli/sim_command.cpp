@@ -12,11 +12,9 @@
 
 #include "checked_model.hpp"
 #include "duet/model/interpreter.hpp"
-#include "duet/model/model_plant.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
-#include "duet/plant/balbot/balbot_plant.hpp"
-#include "duet/plant/balbot/balbot_scenario.hpp"
+#include "duet/model/simulation_plant.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/plot/figure.hpp"
 
@@ -90,25 +88,13 @@ bool write_file(const std::string& path, const std::string& text, Streams stream
 ExitCode run_sim(const SimOptions& options, Streams streams) {
   const auto checked = load_checked_model(options.file, streams.err);
   if (!checked) return ExitCode::failure;
-  // A plant by name, or a model file that is the plant; the robot with a scenario.
-  auto plant = [&]() -> Result<std::unique_ptr<plant::Plant>> {
-    if (!options.scenario.empty()) {
-      if (options.plant != "balbot") return Failure{"--scenario is for --plant balbot"};
-      auto scenario = plant::load_balbot_scenario(options.scenario);
-      if (!scenario) return Failure{scenario.error()};
-      if (options.seed_given) scenario.value().seed = options.seed;
-      return std::unique_ptr<plant::Plant>{plant::make_balbot_plant(scenario.value())};
-    }
-    if (!options.plant.ends_with(".yaml")) return plant::make_plant(options.plant, options.seed);
-    auto loaded = model::ModelPlant::load(options.plant);
-    if (!loaded) return Failure{loaded.error()};
-    for (const std::string& warning : loaded.value()->warnings()) streams.err << warning << '\n';
-    return std::unique_ptr<plant::Plant>{std::move(loaded).value()};
-  }();
+  auto plant = model::make_simulation_plant(options.plant, options.scenario,
+                                           options.seed_given ? std::optional{options.seed} : std::nullopt);
   if (!plant) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
   }
+  for (const std::string& warning : plant.value().warnings) streams.err << warning << '\n';
   auto settings = parse_settings(*checked->model, options.settings);
   if (!settings) {
     streams.err << "duet sim: " << settings.error() << '\n';
@@ -122,7 +108,7 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
         model.set_parameter(setting.parameter, k, setting.values[k]);
     }
   };
-  auto simulated = model::simulate(checked->program, *plant.value(), simulation);
+  auto simulated = model::simulate(checked->program, *plant.value().plant, simulation);
   if (!simulated) {
     streams.err << "duet sim: " << simulated.error() << '\n';
     return ExitCode::failure;

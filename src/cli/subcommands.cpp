@@ -9,6 +9,7 @@
 #include "pil_command.hpp"
 #include "plant_command.hpp"
 #include "sched_command.hpp"
+#include "studio_command.hpp"
 #include "sim_command.hpp"
 #include "subcommand.hpp"
 #include "xcp_command.hpp"
@@ -28,6 +29,7 @@ constexpr Subcommand table[] = {
      define_plant_command},
     {"pil", "Processor in the loop: firmware on QEMU's emulated Cortex-M4 against a simulated plant, with the bridge",
      define_pil_command},
+    {"studio", "See, edit, simulate and watch a model in the browser", define_studio_command},
 };
 
 }  // namespace

@@ -139,7 +139,12 @@ void Dashboard::feed_recorder(double time_s, std::span<const double> values) {
   server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
 }
 
+void Dashboard::broadcast(const json& message, Delivery delivery) {
+  server_.broadcast(dashboard::message(message), delivery);
+}
+
 void Dashboard::welcome(Client& client) {
+  if (backend_.joined) backend_.joined(client);
   if (!description_message_) return;
   client.send(description_message_, Delivery::always);
   for (std::size_t index = 0; index < parameter_values_.size(); ++index) {
@@ -172,6 +177,7 @@ void Dashboard::handle(Client& client, const json& request) {
     if (description_) server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
     return;
   }
+  if (backend_.request && backend_.request(client, request)) return;
   client.error("unknown request type '" + type + "': set, describe, status, record or cancel_record");
 }
 

@@ -101,7 +101,7 @@ class Server::Impl::WebSocketClient final : public Client, public std::enable_sh
 
   void start(http::request<http::string_body> request) {
     socket_.set_option(websocket::stream_base::timeout::suggested(beast::role_type::server));
-    socket_.read_message_max(max_request_size);
+    socket_.read_message_max(server_.options().max_request_size);
     socket_.auto_fragment(false);  // a block of samples goes in one frame, not in 4 KB pieces
     socket_.async_accept(request, [self = shared_from_this()](beast::error_code error) {
       if (!error) self->server_.joined(self);
@@ -178,9 +178,10 @@ class Server::Impl::HttpSession : public std::enable_shared_from_this<HttpSessio
       return reply_text(http::status::method_not_allowed, "GET or HEAD only\n", keep_alive);
     }
     const auto& root = server_.options().web_root;
-    const std::string target{request_.target()};
+    std::string target{request_.target()};
+    if (target == "/" || target.starts_with("/?")) target = "/" + server_.options().index;
     if (root.empty() || !std::filesystem::is_directory(root)) {
-      if (target == "/" || target.starts_with("/?") || target == "/index.html")
+      if (target == "/" + server_.options().index)
         return reply_text(http::status::ok, std::string{not_built}, keep_alive, "text/html; charset=utf-8");
       return reply_text(http::status::not_found, "no such file\n", keep_alive);
     }

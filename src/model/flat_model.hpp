@@ -52,6 +52,16 @@ class FlatModel {
                        [&node](const Block& block) { return &block == node.block; });
   }
 
+  // The signal a scope's name stands for: a subsystem's port name inside it is the parent's signal it is connected
+  // to, and a parent's signal driven by a subsystem's output is the signal inside that drives it.
+  [[nodiscard]] std::string resolve(std::string signal) const {
+    for (std::size_t step = 0; step < aliases_.size() + 1; ++step) {  // bounded: aliases cannot cycle forever
+      const auto found = aliases_.find(signal);
+      if (found == aliases_.end()) return signal;
+      signal = found->second;
+    }
+    return signal;
+  }
   // The name a resolved signal has furthest out: a subsystem's output is known by the parent's signal it drives.
   [[nodiscard]] std::string outermost_name(const std::string& resolved) const {
     std::string best = resolved;
@@ -120,14 +130,7 @@ class FlatModel {
     }
   }
 
-  [[nodiscard]] std::string resolve(std::string signal) const {
-    for (std::size_t step = 0; step < aliases_.size() + 1; ++step) {  // bounded: aliases cannot cycle forever
-      const auto found = aliases_.find(signal);
-      if (found == aliases_.end()) return signal;
-      signal = found->second;
-    }
-    return signal;
-  }
+
 
   std::map<std::string, std::string> aliases_;  // a subsystem's port signal -> the signal it stands for
 };

@@ -41,6 +41,10 @@ struct Backend {
   std::function<void(Client& client)> describe;
   // The back end's part of the status message: `link`, `executive`, counters.
   std::function<nlohmann::json()> status;
+  // Optional, for a server that speaks more than the dashboard (duet studio): what a client gets on joining before
+  // the dashboard's welcome, and requests of other types (false: unknown, answered with an error).
+  std::function<void(Client& client)> joined;
+  std::function<bool(Client& client, const nlohmann::json& request)> request;
 };
 
 class Dashboard {
@@ -61,6 +65,7 @@ class Dashboard {
   // A block: `values` has one column per telemetry signal, each as long as `time_s`.
   void samples(std::span<const double> time_s, const std::vector<std::vector<double>>& values);
   void channel(bool open);
+  void broadcast(const nlohmann::json& message, Delivery delivery);
 
   [[nodiscard]] std::uint64_t clients() const { return server_.clients(); }
   [[nodiscard]] std::uint64_t dropped_for_clients() const { return server_.dropped(); }

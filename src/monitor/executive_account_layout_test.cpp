@@ -1,6 +1,6 @@
 // The executive's account as duet monitor finds it in an A2L that duet gen wrote (the robot's, committed) and reads
 // it from the bytes of duet/rt/executive_account.hpp's struct.
-#include "executive_account_layout.hpp"
+#include "duet/monitor/executive_account_layout.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "duet/rt/executive_account.hpp"
 #include "duet/support/text_file.hpp"
 
-namespace duet::cli {
+namespace duet::monitor {
 namespace {
 
 using xcp::host::A2lDescription;
@@ -77,4 +77,4 @@ TEST(ExecutiveAccountLayout, AnA2lWithoutOneHasNone) {
 }
 
 }  // namespace
-}  // namespace duet::cli
+}  // namespace duet::monitor

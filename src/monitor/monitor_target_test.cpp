@@ -1,6 +1,6 @@
 // duet monitor's back end against a slave running in this process (TestTarget), through a WebSocket client as the
 // dashboard's page talks to it.
-#include "monitor_target.hpp"
+#include "duet/monitor/monitor_target.hpp"
 
 #include <boost/asio.hpp>
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include "test_target.hpp"
 #include "websocket_client.hpp"
 
-namespace duet::cli {
+namespace duet::monitor {
 namespace {
 
 using namespace duet::xcp::host;
@@ -188,4 +188,4 @@ TEST(MonitorTargetOptions, NamesASignalTheA2lLacks) {
 }
 
 }  // namespace
-}  // namespace duet::cli
+}  // namespace duet::monitor

@@ -13,7 +13,7 @@
 
 #include "duet/xcp/host/a2l.hpp"
 
-namespace duet::cli {
+namespace duet::monitor {
 
 class ExecutiveAccountLayout {
  public:
@@ -35,4 +35,4 @@ class ExecutiveAccountLayout {
   std::vector<Task> tasks_;
 };
 
-}  // namespace duet::cli
+}  // namespace duet::monitor

@@ -1,4 +1,4 @@
-#include "executive_account_layout.hpp"
+#include "duet/monitor/executive_account_layout.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 #include "duet/dashboard/executive_status.hpp"
 #include "duet/model/generate.hpp"
 
-namespace duet::cli {
+namespace duet::monitor {
 namespace {
 
 constexpr std::string_view prefix = "executive.";  // the account's names: executive.FIELD, executive.TASK.FIELD
@@ -83,4 +83,4 @@ nlohmann::json ExecutiveAccountLayout::decode(std::span<const std::uint8_t> byte
   return dashboard::executive_status(report);
 }
 
-}  // namespace duet::cli
+}  // namespace duet::monitor

@@ -1,4 +1,4 @@
-#include "monitor_target.hpp"
+#include "duet/monitor/monitor_target.hpp"
 
 #include <boost/asio.hpp>
 #include <nlohmann/json.hpp>
@@ -18,9 +18,9 @@
 #include "duet/model/generate.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
-#include "executive_account_layout.hpp"
+#include "duet/monitor/executive_account_layout.hpp"
 
-namespace duet::cli {
+namespace duet::monitor {
 namespace {
 
 using namespace duet::xcp::host;
@@ -107,12 +107,16 @@ class MonitorTarget::Impl {
   }
 
   Status start() {
-    dashboard_.emplace(io_, options_.server,
-                       dashboard::Backend{.set = [this](dashboard::Client& client, const std::string& name,
-                                                        double value) { set(client, name, value); },
-                                          .describe = [this](dashboard::Client&) { describe(); },
-                                          .status = [this] { return status(); }});
-    if (Status started = dashboard_->start(); !started) return started;
+    dashboard_ = options_.dashboard;
+    if (dashboard_ == nullptr) {
+      own_dashboard_.emplace(io_, options_.server,
+                             dashboard::Backend{.set = [this](dashboard::Client& client, const std::string& name,
+                                                              double value) { set(client, name, value); },
+                                                .describe = [this](dashboard::Client&) { describe(); },
+                                                .status = [this] { return status(); }});
+      if (Status started = own_dashboard_->start(); !started) return started;
+      dashboard_ = &*own_dashboard_;
+    }
     describe();
     worker_ = std::thread{[this] { work(); }};
     return done();
@@ -125,16 +129,10 @@ class MonitorTarget::Impl {
     }
     wake_.notify_all();
     if (worker_.joinable()) worker_.join();
-    if (dashboard_) dashboard_->close();
+    if (own_dashboard_) own_dashboard_->close();
   }
 
-  [[nodiscard]] std::uint16_t port() const { return dashboard_ ? dashboard_->port() : 0; }
-
- private:
-  struct Write {
-    std::size_t parameter = 0;
-    std::vector<std::uint8_t> bytes;
-  };
+  [[nodiscard]] std::uint16_t port() const { return dashboard_ != nullptr ? dashboard_->port() : 0; }
 
   // On the io thread.
   void describe() {
@@ -167,7 +165,7 @@ class MonitorTarget::Impl {
   }
 
   // Thread-safe.
-  json status() const {
+  [[nodiscard]] json status() const {
     json link = {{"state", link_state_name()}, {"address", to_string(options_.target)}};
     {
       const std::lock_guard lock{mutex_};
@@ -187,6 +185,12 @@ class MonitorTarget::Impl {
     if (!account_json_.is_null()) status["executive"] = account_json_;
     return status;
   }
+
+ private:
+  struct Write {
+    std::size_t parameter = 0;
+    std::vector<std::uint8_t> bytes;
+  };
 
   enum class LinkState { connecting, open, closed };
   [[nodiscard]] std::string link_state_name() const {
@@ -374,7 +378,8 @@ class MonitorTarget::Impl {
   std::optional<EventInfo> event_;
   std::optional<ExecutiveAccountLayout> account_;  // read by the worker only, after choose()
   double base_period_s_ = 0;                       // the fastest periodic event's
-  std::optional<dashboard::Dashboard> dashboard_;
+  std::optional<dashboard::Dashboard> own_dashboard_;
+  dashboard::Dashboard* dashboard_ = nullptr;  // the own one or the owner's
   std::vector<std::optional<double>> parameter_values_;  // on the io thread
   std::thread worker_;
 
@@ -401,5 +406,10 @@ MonitorTarget::~MonitorTarget() { impl_->stop(); }
 Status MonitorTarget::start() { return impl_->start(); }
 void MonitorTarget::stop() { impl_->stop(); }
 std::uint16_t MonitorTarget::port() const { return impl_->port(); }
+void MonitorTarget::set(dashboard::Client& client, const std::string& name, double value) {
+  impl_->set(client, name, value);
+}
+void MonitorTarget::describe() { impl_->describe(); }
+nlohmann::json MonitorTarget::status() const { return impl_->status(); }
 
-}  // namespace duet::cli
+}  // namespace duet::monitor

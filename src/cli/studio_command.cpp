@@ -1,0 +1,98 @@
+#include "studio_command.hpp"
+
+#include <CLI/CLI.hpp>
+#include <boost/asio.hpp>
+#include <poll.h>
+
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "duet/dashboard/static_files.hpp"
+#include "duet/link/tcp.hpp"
+#include "duet/studio/studio.hpp"
+#include "host_port_validator.hpp"
+#include "stop_signals.hpp"
+
+namespace duet::cli {
+namespace {
+
+struct StudioCommandOptions {
+  std::string model;
+  std::string plant = "none";
+  std::string scenario;
+  double duration_s = 5;
+  std::string xcp;
+  std::string listen = "127.0.0.1:8767";
+  bool expose = false;
+  std::string web = dashboard::default_web_root().string();
+};
+
+ExitCode run_studio(const StudioCommandOptions& options, Streams streams) {
+  auto listen = link::parse_host_port(options.listen).value();  // checked by the validator
+  if (listen.host != "127.0.0.1" && !options.expose) {
+    streams.err << "duet studio: --listen " << options.listen
+                << " would reach beyond this machine: add --expose to mean it\n";
+    return ExitCode::usage;
+  }
+  // The page picks plants and scenarios beside the model by name; the command line may name them anywhere.
+  auto beside = [&options](const std::string& file) {
+    return std::filesystem::path{file}.parent_path() == std::filesystem::path{options.model}.parent_path()
+               ? std::filesystem::path{file}.filename().string()
+               : file;
+  };
+  boost::asio::io_context io;
+  auto studio = studio::Studio::create(
+      io, {.model = options.model,
+           .server = {.address = listen.host, .port = listen.port, .web_root = options.web, .log_name = "duet studio"},
+           .plant = options.plant.ends_with(".yaml") ? beside(options.plant) : options.plant,
+           .scenario = options.scenario.empty() ? std::string{} : beside(options.scenario),
+           .duration_s = options.duration_s,
+           .xcp = options.xcp});
+  if (!studio) {
+    streams.err << "duet studio: " << studio.error() << '\n';
+    return ExitCode::failure;
+  }
+  StopSignals stop;
+  if (Status started = studio.value()->start(); !started) {
+    streams.err << "duet studio: " << started.error() << '\n';
+    return ExitCode::failure;
+  }
+  streams.out << "duet studio: " << options.model << " on http://" << listen.host << ':' << studio.value()->port()
+              << "/ (Ctrl-C stops)" << std::endl;
+  std::thread serving{[&io] { io.run(); }};
+  pollfd signal_fd{stop.fd(), POLLIN, 0};
+  while (!stop.received()) ::poll(&signal_fd, 1, -1);
+  io.stop();
+  serving.join();
+  studio.value()->stop();
+  streams.out << "duet studio: stopped\n";
+  return ExitCode::success;
+}
+
+}  // namespace
+
+Action define_studio_command(CLI::App& command) {
+  auto options = std::make_shared<StudioCommandOptions>();
+  command.add_option("model", options->model, "The model file (docs/MODELS.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command.add_option("--plant", options->plant, "The page's plant: a name, or a plant model's file")
+      ->capture_default_str();
+  command.add_option("--scenario", options->scenario, "The page's scenario for --plant balbot")
+      ->check(CLI::ExistingFile);
+  command.add_option("--duration", options->duration_s, "The page's simulation duration in seconds")
+      ->capture_default_str()
+      ->check(CLI::Range(0.001, 3600.0));
+  command.add_option("--xcp", options->xcp, "A running target's XCP (tcp://host:port or udp://host:port): external mode");
+  command.add_option("--listen", options->listen, "Address:port of the page (HTTP and WebSocket)")
+      ->capture_default_str()
+      ->check(host_port_validator());
+  command.add_flag("--expose", options->expose, "Allow listening on addresses other than 127.0.0.1 (the network)");
+  command.add_option("--web", options->web, "The built front end (web/dist)")
+      ->capture_default_str()
+      ->check(CLI::ExistingDirectory);
+  return [options](Streams streams) { return run_studio(*options, streams); };
+}
+
+}  // namespace duet::cli

@@ -1,0 +1,476 @@
+#include "duet/studio/model_view.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <map>
+
+#include "duet/model/block_types.hpp"
+#include "duet/model/data_type.hpp"
+#include "duet/model/model_file.hpp"
+#include "duet/model/signal_names.hpp"
+#include "duet/model/task_set_file.hpp"
+
+namespace duet::studio {
+namespace {
+
+using nlohmann::json;
+using model::Block;
+using model::Connection;
+using model::Location;
+
+// The reader stops at its first problem and says it as `file:line:column: error: what (hint)`.
+model::Diagnostic parse_problem(const std::string& text) {
+  model::Diagnostic diagnostic;
+  diagnostic.message = text;
+  for (const char* marker : {": error: ", ": warning: "}) {
+    const auto at = text.find(marker);
+    if (at == std::string::npos) continue;
+    const auto column_colon = text.rfind(':', at - 1);
+    const auto line_colon = column_colon == std::string::npos ? std::string::npos : text.rfind(':', column_colon - 1);
+    if (line_colon == std::string::npos) continue;
+    int line = 0;
+    int column = 0;
+    const char* line_text = text.data() + line_colon + 1;
+    const char* column_text = text.data() + column_colon + 1;
+    if (std::from_chars(line_text, text.data() + column_colon, line).ec != std::errc{} ||
+        std::from_chars(column_text, text.data() + at, column).ec != std::errc{}) {
+      continue;
+    }
+    diagnostic.location = {line, column};
+    diagnostic.message = text.substr(at + std::string_view{marker}.size());
+    break;
+  }
+  if (diagnostic.location.line == 0) diagnostic.location = {1, 1};  // a problem of the whole file
+  return diagnostic;
+}
+
+// The text's lines, for the lines each block spans.
+class Lines {
+ public:
+  explicit Lines(std::string_view text) {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const auto end = text.find('\n', start);
+      lines_.push_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+      if (end == std::string_view::npos) break;
+      start = end + 1;
+    }
+  }
+
+  // The last line of the block whose mapping starts at `start`: the following lines indented at least as far as its
+  // keys belong to it; blank and comment lines only where more of it follows.
+  [[nodiscard]] int block_end(Location start) const {
+    int last = start.line;
+    for (int line = start.line + 1; line <= static_cast<int>(lines_.size()); ++line) {
+      const std::string_view text = lines_[static_cast<std::size_t>(line - 1)];
+      const auto indentation = text.find_first_not_of(' ');
+      if (indentation == std::string_view::npos || text[indentation] == '#') continue;
+      if (static_cast<int>(indentation) < start.column - 1) break;
+      last = line;
+    }
+    return last;
+  }
+
+ private:
+  std::vector<std::string_view> lines_;
+};
+
+std::string value_text(const model::Value& value) {
+  auto element = [&](std::size_t index) { return model::format_number(value.elements[index]); };
+  if (value.shape.empty() && value.elements.size() == 1) return element(0);
+  std::string text = "[";
+  if (value.shape.size() == 2) {
+    for (std::size_t row = 0; row < value.shape[0]; ++row) {
+      text += row == 0 ? "[" : ", [";
+      for (std::size_t column = 0; column < value.shape[1]; ++column)
+        text += (column == 0 ? "" : ", ") + element(row * value.shape[1] + column);
+      text += "]";
+    }
+  } else {
+    for (std::size_t index = 0; index < value.elements.size(); ++index) text += (index == 0 ? "" : ", ") + element(index);
+  }
+  return text + "]";
+}
+
+json location_json(Location location) { return {{"line", location.line}, {"column", location.column}}; }
+
+// The port number of u1, u2, ...: variadic inputs are drawn in that order.
+int port_number(const std::string& port) {
+  int number = 0;
+  if (port.size() < 2 || port[0] != 'u' ||
+      std::from_chars(port.data() + 1, port.data() + port.size(), number).ec != std::errc{}) {
+    return 0;
+  }
+  return number;
+}
+
+class DiagramBuilder {
+ public:
+  DiagramBuilder(const CheckedText& checked, std::string_view text)
+      : model_(*checked.model), program_(checked.program ? &*checked.program : nullptr), lines_(text), names_(model_) {
+    if (program_ == nullptr) return;
+    for (const model::ProgramBlock& block : program_->blocks) {
+      if (block.task == model::at_initialisation) {
+        tasks_[block.path] = "constant";
+      } else {
+        tasks_[block.path] = block.task;
+      }
+    }
+  }
+
+  json diagram() {
+    json parameters = json::array();
+    for (const model::Parameter& parameter : model_.parameters) {
+      json entry = {{"name", parameter.name},
+                    {"value", value_text(parameter.value)},
+                    {"type", model::type_name(parameter.type)},
+                    {"unit", parameter.unit},
+                    {"description", parameter.description},
+                    {"min", parameter.minimum ? json(*parameter.minimum) : json()},
+                    {"max", parameter.maximum ? json(*parameter.maximum) : json()}};
+      entry.update(location_json(parameter.location));
+      parameters.push_back(std::move(entry));
+    }
+    return {{"name", model_.name},
+            {"base_period_us", model_.base_period_us},
+            {"root", system(model_.blocks, "", nullptr)},
+            {"parameters", std::move(parameters)}};
+  }
+
+ private:
+  // The blocks of one scope; `owner` is the subsystem whose inside it is (none at the top).
+  json system(const std::vector<Block>& blocks, const std::string& path, const Block* owner) {
+    const std::string scope = path.empty() ? "" : path + "/";
+    Wires wires{*this, scope, path};
+    json system = {{"path", path}, {"inputs", json::array()}, {"outputs", json::array()}, {"blocks", json::array()}};
+    if (owner != nullptr) {
+      for (const Connection& input : owner->inputs) {
+        system["inputs"].push_back({{"port", input.port}, {"signal", input.signal}});
+        wires.drive(input.port, {{"system_input", input.port}}, input.location);
+      }
+    }
+    for (const Block& block : blocks) {
+      const std::string id = scope + block.name;
+      for (const Connection& output : block.outputs)
+        wires.drive(output.signal, {{"block", id}, {"port", output.port}}, output.location);
+      for (const Connection& input : block.inputs)
+        wires.read(input.signal, {{"block", id}, {"port", input.port}}, input.location);
+      if (block.trigger.kind == model::Trigger::Kind::edge)
+        wires.read(block.trigger.signal, {{"block", id}, {"port", "trigger"}}, block.trigger.location);
+      if (!block.enable.empty()) wires.read(block.enable, {{"block", id}, {"port", "enable"}}, block.location);
+      system["blocks"].push_back(block_json(block, id));
+    }
+    if (owner != nullptr) {
+      for (const Connection& output : owner->outputs) {
+        system["outputs"].push_back({{"port", output.port}, {"signal", output.signal}});
+        wires.read(output.port, {{"system_output", output.port}}, output.location);
+      }
+    }
+    system["wires"] = wires.take();
+    return system;
+  }
+
+  json block_json(const Block& block, const std::string& id) {
+    json entry = {{"id", id},
+                  {"name", block.name},
+                  {"type", block.type},
+                  {"line", block.location.line},
+                  {"column", block.location.column},
+                  {"end_line", lines_.block_end(block.location)},
+                  {"task", task_of(block, id)},
+                  {"period", period_json(block.period)},
+                  {"inputs", ports(block, true)},
+                  {"outputs", ports(block, false)},
+                  {"parameters", arguments(block)}};
+    if (block.type == "Subsystem") entry["system"] = system(block.blocks, id, &block);
+    if (block.trigger.kind != model::Trigger::Kind::none) {
+      const model::Trigger& trigger = block.trigger;
+      const bool interrupt = trigger.kind == model::Trigger::Kind::interrupt;
+      entry["trigger"] = {{"kind", interrupt ? "interrupt" : "edge"},
+                          {"interrupt", interrupt ? json(trigger.interrupt) : json()},
+                          {"priority", trigger.priority ? json(*trigger.priority) : json()},
+                          {"edge", interrupt ? json() : json(trigger.edge)},
+                          {"signal", interrupt ? json() : json(trigger.signal)}};
+      entry["trigger"].update(location_json(trigger.location));
+    }
+    if (!block.enable.empty()) entry["enable"] = block.enable;
+    if (block.code) entry["code"] = {{"function", block.code->function}, {"file", block.code->file}};
+    return entry;
+  }
+
+  // A block runs in one task; a subsystem in the task its blocks share (none when they differ or are unknown).
+  json task_of(const Block& block, const std::string& id) const {
+    if (block.type != "Subsystem") {
+      const auto found = tasks_.find(id);
+      return found == tasks_.end() ? json() : found->second;
+    }
+    std::optional<json> shared;
+    for (const Block& inner : block.blocks) {
+      json task = task_of(inner, id + "/" + inner.name);
+      if (task.is_null() || (shared && *shared != task)) return json();
+      shared = std::move(task);
+    }
+    return shared ? *shared : json();
+  }
+
+  static json period_json(const model::Period& period) {
+    switch (period.kind) {
+      case model::Period::Kind::inherited: return "inherited";
+      case model::Period::Kind::base: return "base";
+      case model::Period::Kind::constant: return "constant";
+      case model::Period::Kind::multiple: return period.multiple;
+    }
+    return "inherited";
+  }
+
+  // The ports the diagram draws: the type's own in its order (connected or not), a variadic block's connected ones
+  // (at least two), a subsystem's or Code block's as written; a connection to a port the type lacks is drawn too,
+  // so that the checker's error about it has something to sit on.
+  static json ports(const Block& block, bool inputs) {
+    const std::vector<Connection>& connections = inputs ? block.inputs : block.outputs;
+    std::vector<std::string> names;
+    const model::BlockType* type = model::find_block_type(block.type);
+    if (type != nullptr && !type->user_defined_ports) {
+      if (inputs && type->variadic_inputs) {
+        int highest = 2;
+        for (const Connection& connection : connections) highest = std::max(highest, port_number(connection.port));
+        for (int number = 1; number <= highest; ++number) names.push_back("u" + std::to_string(number));
+      } else {
+        const auto& fixed = inputs ? type->inputs : type->outputs;
+        for (std::string_view name : fixed) names.emplace_back(name);
+        if (inputs) {
+          for (std::string_view name : type->optional_inputs) names.emplace_back(name);
+        }
+      }
+    }
+    for (const Connection& connection : connections) {
+      if (std::find(names.begin(), names.end(), connection.port) == names.end()) names.push_back(connection.port);
+    }
+    if (block.type == "Demux" && !inputs) names = demux_outputs(connections);
+    json result = json::array();
+    for (const std::string& name : names) {
+      const auto connected = std::find_if(connections.begin(), connections.end(),
+                                          [&](const Connection& connection) { return connection.port == name; });
+      json port = {{"port", name}, {"kind", "data"}};
+      if (connected != connections.end()) {
+        port["signal"] = connected->signal;
+        port.update(location_json(connected->location));
+      } else {
+        port["signal"] = nullptr;
+      }
+      result.push_back(std::move(port));
+    }
+    if (inputs && block.trigger.kind == model::Trigger::Kind::edge) {
+      json port = {{"port", "trigger"}, {"kind", "trigger"}, {"signal", block.trigger.signal}};
+      port.update(location_json(block.trigger.location));
+      result.push_back(std::move(port));
+    }
+    if (inputs && !block.enable.empty()) {
+      json port = {{"port", "enable"}, {"kind", "enable"}, {"signal", block.enable}};
+      port.update(location_json(block.location));
+      result.push_back(std::move(port));
+    }
+    return result;
+  }
+
+  // A Demux has eight outputs; drawn are those up to the highest connected one, and one more to connect.
+  static std::vector<std::string> demux_outputs(const std::vector<Connection>& connections) {
+    int highest = 0;
+    for (const Connection& connection : connections) {
+      int number = 0;
+      const std::string& port = connection.port;
+      if (port.size() >= 2 && port[0] == 'y' &&
+          std::from_chars(port.data() + 1, port.data() + port.size(), number).ec == std::errc{}) {
+        highest = std::max(highest, number);
+      }
+    }
+    std::vector<std::string> names;
+    for (int number = 1; number <= std::min(highest + 1, 8); ++number) names.push_back("y" + std::to_string(number));
+    return names;
+  }
+
+  json arguments(const Block& block) const {
+    json result = json::array();
+    for (const auto& [name, parameter] : block.parameters) {
+      const bool tunable = !parameter.reference.empty() &&
+                           std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                                       [&](const model::Parameter& model) { return model.name == parameter.reference; });
+      json entry = {{"name", name},
+                    {"text", parameter.text},
+                    {"reference", parameter.reference.empty() ? json() : json(parameter.reference)},
+                    {"tunable", tunable}};
+      entry.update(location_json(parameter.location));
+      result.push_back(std::move(entry));
+    }
+    return result;
+  }
+
+  // The signals one system names, in the order they first appear: who drives each and who reads it.
+  class Wires {
+   public:
+    Wires(const DiagramBuilder& builder, std::string scope, std::string path)
+        : builder_(builder), scope_(std::move(scope)), path_(std::move(path)) {}
+
+    void drive(const std::string& signal, json source, Location location) {
+      Wire& wire = at(signal, location);
+      if (wire.source.is_null()) wire.source = std::move(source);
+      wire.driver_location = location;
+    }
+    void read(const std::string& signal, json target, Location location) {
+      at(signal, location).targets.push_back(std::move(target));
+    }
+
+    json take() {
+      json result = json::array();
+      for (Wire& wire : wires_) result.push_back(builder_.wire_json(wire, scope_, path_));
+      return result;
+    }
+
+    struct Wire {
+      std::string signal;
+      json source;
+      json targets = json::array();
+      Location first_location;
+      std::optional<Location> driver_location;
+    };
+
+   private:
+    Wire& at(const std::string& signal, Location location) {
+      const auto found = index_.find(signal);
+      if (found != index_.end()) return wires_[found->second];
+      index_[signal] = wires_.size();
+      return wires_.emplace_back(Wire{signal, json(), json::array(), location, std::nullopt});
+    }
+
+    const DiagramBuilder& builder_;
+    std::string scope_;
+    std::string path_;
+    std::vector<Wire> wires_;
+    std::map<std::string, std::size_t> index_;
+  };
+
+  json wire_json(const Wires::Wire& wire, const std::string& scope, const std::string& path) const {
+    const std::string resolved = names_.model_wide(scope, wire.signal);
+    Location location = wire.driver_location.value_or(wire.first_location);
+    json entry = {{"id", path + ":" + wire.signal}, {"signal", wire.signal},     {"resolved", resolved},
+                  {"measurement", nullptr},         {"source", wire.source},     {"targets", wire.targets},
+                  {"type", nullptr},                {"unit", ""}};
+    if (scope.empty()) {
+      const auto declared =
+          std::find_if(model_.signals.begin(), model_.signals.end(),
+                       [&](const model::SignalDeclaration& declaration) { return declaration.name == wire.signal; });
+      if (declared != model_.signals.end()) {
+        location = declared->location;
+        entry["unit"] = declared->unit;
+      }
+    }
+    if (program_ != nullptr) {
+      if (const auto index = program_->find_signal(resolved)) {
+        const model::ProgramSignal& signal = program_->signals[*index];
+        entry["type"] = model::describe(signal.type);
+        entry["unit"] = signal.unit;
+        if (signal.measurable) {
+          std::string measurement = signal.name;
+          std::replace(measurement.begin(), measurement.end(), '/', '.');
+          entry["measurement"] = measurement;
+        }
+      }
+    }
+    entry.update(location_json(location));
+    return entry;
+  }
+
+  const model::Model& model_;
+  const model::Program* program_;
+  Lines lines_;
+  model::SignalNames names_;
+  std::map<std::string, json> tasks_;  // block path -> task index or "constant"
+};
+
+}  // namespace
+
+json tasks_json(const model::Program& program) {
+  json tasks = json::array();
+  for (std::size_t index = 0; index < program.tasks.size(); ++index) {
+    const model::ProgramTask& task = program.tasks[index];
+    const bool periodic = task.rate.kind == model::Rate::Kind::periodic;
+    tasks.push_back(
+        {{"index", index},
+         {"name", task.name},
+         {"function", model::task_function_name(task)},
+         {"kind", periodic ? "periodic" : "interrupt"},
+         {"period_us", periodic ? json(static_cast<double>(task.rate.multiple) * program.model->base_period_us)
+                                : json()},
+         {"interrupt", periodic ? json() : json(task.rate.interrupt)},
+         {"priority", task.priority ? json(*task.priority) : json()},
+         {"blocks", task.outputs.size()}});
+  }
+  return tasks;
+}
+
+namespace {
+
+// The innermost block whose lines hold `location`, by id.
+void find_block(const json& system, Location location, std::string& found) {
+  for (const json& block : system["blocks"]) {
+    if (location.line < block["line"].get<int>() || location.line > block["end_line"].get<int>()) continue;
+    found = block["id"].get<std::string>();
+    if (block.contains("system")) find_block(block["system"], location, found);
+  }
+}
+
+}  // namespace
+
+CheckedText check_text(std::string_view text, const std::string& file) {
+  CheckedText checked;
+  auto model = model::parse_model(text, file);
+  if (!model) {
+    checked.diagnostics.push_back(parse_problem(model.error()));
+    return checked;
+  }
+  checked.model = std::make_unique<model::Model>(std::move(model).value());
+  model::ProgramBuild build = model::build_program(*checked.model);
+  checked.diagnostics = std::move(build.diagnostics);
+  checked.program = std::move(build.program);
+  return checked;
+}
+
+json model_view(const CheckedText& checked, std::string_view text) {
+  json view = {{"ok", checked.program.has_value()}, {"diagnostics", json::array()}, {"diagram", nullptr},
+               {"tasks", checked.program ? tasks_json(*checked.program) : json::array()}};
+  if (checked.model) view["diagram"] = DiagramBuilder{checked, text}.diagram();
+  for (const model::Diagnostic& diagnostic : checked.diagnostics) {
+    json entry = {{"severity", diagnostic.severity == model::Diagnostic::Severity::error ? "error" : "warning"},
+                  {"line", diagnostic.location.line},
+                  {"column", diagnostic.location.column},
+                  {"message", diagnostic.message},
+                  {"hint", diagnostic.hint},
+                  {"block", nullptr}};
+    if (!view["diagram"].is_null()) {
+      std::string block;
+      find_block(view["diagram"]["root"], diagnostic.location, block);
+      if (!block.empty()) entry["block"] = block;
+    }
+    view["diagnostics"].push_back(std::move(entry));
+  }
+  return view;
+}
+
+DiagramCounts count(const json& diagram) {
+  DiagramCounts counts;
+  auto visit = [&counts](const json& system, auto& self) -> void {
+    counts.wires += system["wires"].size();
+    for (const json& block : system["blocks"]) {
+      if (!block.contains("system")) {
+        ++counts.blocks;
+        continue;
+      }
+      ++counts.subsystems;
+      self(block["system"], self);
+    }
+  };
+  if (diagram.contains("root")) visit(diagram["root"], visit);
+  return counts;
+}
+
+}  // namespace duet::studio
