@@ -28,7 +28,7 @@ export function createEditor(parent, { onEdit, onCursor, onSave }) {
     Prec.highest(keymap.of([{ key: 'Mod-s', preventDefault: true, run: () => (onSave(), true) }])),
     EditorState.lineSeparator.of(separator),
     EditorView.updateListener.of((update) => {
-      if (update.docChanged) onEdit(update.state.doc.toString());
+      if (update.docChanged) onEdit(update.state.sliceDoc());
       if (update.selectionSet && update.transactions.some((t) => t.isUserEvent('select') || t.isUserEvent('input') || t.isUserEvent('delete'))) {
         onCursor(update.state.selection.main);
       }
@@ -40,7 +40,7 @@ export function createEditor(parent, { onEdit, onCursor, onSave }) {
   return {
     view,
     // As saved: the file's own line separators.
-    getText: () => view.state.doc.toString(),
+    getText: () => view.state.sliceDoc(), // joined with the state's separator (doc.toString() would use "\n")
     // With "\n" between lines, for yaml_edit (same positions as the editor's).
     editText: () => view.state.doc.sliceString(0, view.state.doc.length, '\n'),
     get doc() {
@@ -77,6 +77,13 @@ export function createEditor(parent, { onEdit, onCursor, onSave }) {
     },
 
     selection: () => ({ from: view.state.selection.main.from, to: view.state.selection.main.to }),
+
+    // Between positions (a line break counts 1) and offsets into getText() (a "\r\n" counts 2).
+    offsetOf: (position) => position + (view.state.doc.lineAt(position).number - 1) * (separator.length - 1),
+    positionOf(offset) {
+      const breaks = separator.length === 1 ? 0 : view.state.sliceDoc().slice(0, offset).split(separator).length - 1;
+      return offset - breaks * (separator.length - 1);
+    },
 
     setDiagnostics(diagnostics) {
       view.dispatch(setDiagnostics(view.state, diagnostics));

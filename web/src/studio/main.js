@@ -253,7 +253,16 @@ makeSplitter(byId('split-horizontal'), { property: '--bottom-height', axis: 'y',
 window.duetStudio = {
   stats,
   view,
-  editor: { getText: editor.getText, setText: editor.setText, select: editor.select, selection: editor.selection },
+  // Offsets into getText(), whatever the line separator.
+  editor: {
+    getText: editor.getText,
+    setText: editor.setText,
+    select: (from, to = from) => editor.select(editor.positionOf(from), editor.positionOf(to)),
+    selection: () => {
+      const { from, to } = editor.selection();
+      return { from: editor.offsetOf(from), to: editor.offsetOf(to) };
+    },
+  },
   connection,
   hub,
   get lastModel() {
