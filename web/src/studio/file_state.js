@@ -6,6 +6,7 @@ export function createFileState({ connection, editor, nodes, say }) {
   let base = null;
   let savedText = null;
   let saving = false;
+  let pendingText = null; // the text of the save in flight: what is on disk once it is `saved`
 
   const dirty = () => savedText !== null && editor.getText() !== savedText;
   const showDirty = () => {
@@ -25,7 +26,6 @@ export function createFileState({ connection, editor, nodes, say }) {
     pendingText = text;
     say('saving…');
   };
-  let pendingText = null;
 
   const reload = () => {
     if (!connection.send({ type: 'reload' })) say('not connected: cannot reload', 'bad');
@@ -48,8 +48,7 @@ export function createFileState({ connection, editor, nodes, say }) {
   return {
     save,
     dirty,
-    // A text as it is on disk (the studio message, a `file` answer); `keepEdits` when the editor
-    // holds unsaved text that must not be replaced (a reconnection).
+    // A text as it is on disk (the studio message, a `file` answer), now in the editor.
     loaded({ text, version }) {
       base = version;
       savedText = text;
