@@ -1,0 +1,395 @@
+// duet studio end to end in headless Chromium against the real server (`duet studio`), as docs/STUDIO.md's
+// acceptance list asks:
+//   robot     apps/balbot/balbot.yaml: every block and wire of every system drawn (the counts `duet model check
+//             --json` gives), a subsystem opened and left, a block selected in the diagram selects its text and the
+//             reverse, an error typed into the text marked on the text and the block within 1 s and fixed; the
+//             layout time of the first drawing and the edit-to-checked latency (median of 20 edits).
+//   gold      apps/pid_demo/pid_demo.yaml: a Gain put between two connected blocks from the palette, connected by
+//             dragging, its k set in the form, saved; `duet model check` and `duet sim` accept the file.
+//   roundtrip every example model opened and saved without edits: byte-identical files.
+//   simulate  pid_demo simulated from the page: the plot drawn, a clicked wire added to it.
+//   external  (with --firmware) the robot's firmware on QEMU in lock-step (duet pil) and `duet studio --xcp`:
+//             theta's value changes on its wire, P written on its block and read back, the refresh rate of the
+//             live values with the whole top level visible.
+// Every model is a copy in a folder of its own. Screenshots go to --artefacts. Prints one JSON line of results and
+// exits 1 naming the failed step.
+// Usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware balbot-pil.elf]
+//        [--steps robot,gold,roundtrip,simulate,external]
+import { spawn, execFile } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { copyFile, mkdir, mkdtemp, readdir, readFile, rm, writeFile } from 'node:fs/promises';
+import { tmpdir } from 'node:os';
+import path from 'node:path';
+import { promisify } from 'node:util';
+import { chromium_path, launchChromium, parseOptions, waitFor } from './browser.mjs';
+
+const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--steps LIST]';
+const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', steps: 'robot,gold,roundtrip,simulate,external' }, usage);
+if (!options.duet || !options.root || !options.artefacts) {
+  console.error(usage);
+  process.exit(2);
+}
+options.duet = path.resolve(options.duet);
+options.root = path.resolve(options.root);
+const steps = new Set(options.steps.split(','));
+const run = promisify(execFile);
+const results = { ok: false };
+const children = [];
+let step = 'start';
+let work;
+let browser;
+
+// A child program whose first line naming an http:// or tcp:// address is awaited; its output kept for failures.
+function start(program, args, pattern) {
+  const child = spawn(program, args, { stdio: ['ignore', 'pipe', 'pipe'] });
+  children.push(child);
+  let output = '';
+  return new Promise((resolve, reject) => {
+    const timer = setTimeout(() => reject(new Error(`${path.basename(program)} ${args[0]} said nothing matching ${pattern}:\n${output}`)), 30000);
+    const take = (data) => {
+      output += data;
+      const found = output.match(pattern);
+      if (found) {
+        clearTimeout(timer);
+        resolve({ child, address: found[0], output: () => output });
+      }
+    };
+    child.stdout.on('data', take);
+    child.stderr.on('data', take);
+    child.on('exit', (code) => reject(new Error(`${path.basename(program)} ended (${code}):\n${output}`)));
+  });
+}
+
+function stop(child) {
+  child.removeAllListeners('exit');
+  child.kill('SIGINT');
+}
+
+// A copy of a model's folder: the model and the files beside it (Code blocks' headers, scenarios).
+async function copyModel(relative) {
+  const from = path.join(options.root, path.dirname(relative));
+  const to = await mkdtemp(path.join(work, `${path.basename(relative, '.yaml')}-`));
+  for (const entry of await readdir(from, { withFileTypes: true })) {
+    if (entry.isFile()) await copyFile(path.join(from, entry.name), path.join(to, entry.name));
+  }
+  return path.join(to, path.basename(relative));
+}
+
+async function studio(model, extra = []) {
+  const server = await start(options.duet, ['studio', model, '--listen', '127.0.0.1:0', '--web', path.join(options.root, 'web/dist'), ...extra], /http:\/\/127\.0\.0\.1:\d+\//);
+  const page = await browser.newPage({ viewport: { width: 1600, height: 1000 } });
+  const errors = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  const opened = Date.now();
+  await page.goto(server.address);
+  await page.waitForFunction(() => window.duetStudio?.lastModel && document.querySelector('g.block'), null, { timeout: 30000 });
+  const firstDrawMs = Date.now() - opened;
+  return { server, page, errors, firstDrawMs, close: async () => { await page.close(); stop(server.child); } };
+}
+
+const text = (page) => page.evaluate(() => window.duetStudio.editor.getText());
+const currentSystem = (page) => page.evaluate(() => window.duetStudio.view.currentSystem());
+const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
+
+// Every system of the diagram, shown one after the other: the blocks and wires drawn, summed.
+async function drawnCounts(page) {
+  const paths = await page.evaluate(() => {
+    const found = [];
+    const visit = (system) => {
+      found.push(system.path);
+      for (const block of system.blocks) if (block.system) visit(block.system);
+    };
+    visit(window.duetStudio.lastModel.diagram.root);
+    return found;
+  });
+  const counts = { boxes: 0, wires: 0, systems: paths.length };
+  for (const system of paths) {
+    await page.evaluate((path) => window.duetStudio.view.showSystem(path), system);
+    await page.waitForFunction((path) => window.duetStudio.view.currentSystem() === path && window.duetStudio.view.stats().system === path, system);
+    await page.waitForTimeout(50);
+    const drawn = await page.evaluate(() => ({
+      boxes: document.querySelectorAll('#diagram g.block').length,
+      wires: document.querySelectorAll('#diagram g.wire').length,
+    }));
+    counts.boxes += drawn.boxes;
+    counts.wires += drawn.wires;
+  }
+  await page.evaluate(() => window.duetStudio.view.showSystem(''));
+  return counts;
+}
+
+async function robot() {
+  const model = await copyModel('apps/balbot/balbot.yaml');
+  const expected = JSON.parse((await run(options.duet, ['model', 'check', '--json', model])).stdout);
+  const session = await studio(model);
+  const { page } = session;
+  const stats = await page.evaluate(() => window.duetStudio.view.stats());
+  results.robot = { first_draw_ms: session.firstDrawMs, layout_ms: stats.layoutMs, draw_ms: stats.drawMs };
+  await page.evaluate(() => window.duetStudio.view.fit());
+  await page.screenshot({ path: path.join(options.artefacts, 'studio-balbot.png') });
+
+  step = 'robot: every block and wire drawn';
+  const counts = await drawnCounts(page);
+  if (counts.boxes !== expected.blocks + expected.subsystems || counts.wires !== expected.wires) {
+    throw new Error(`drawn ${counts.boxes} blocks and ${counts.wires} wires; duet model check --json says ${expected.blocks} + ${expected.subsystems} subsystems and ${expected.wires} wires`);
+  }
+  results.robot.drawn = counts;
+
+  step = 'robot: a subsystem opened and left';
+  await page.evaluate(() => window.duetStudio.view.fit());
+  await page.dblclick('g.block[data-id="filter"]');
+  await waitFor('the subsystem filter shown', 5000, async () => (await currentSystem(page)) === 'filter');
+  await page.waitForSelector('g.block[data-id="filter/kalman"]');
+  await page.screenshot({ path: path.join(options.artefacts, 'studio-subsystem.png') });
+  await page.click('nav.breadcrumb a[data-path=""]');
+  await waitFor('the top level shown again', 5000, async () => (await currentSystem(page)) === '');
+
+  step = 'robot: a block selected in the diagram selects its text';
+  await page.evaluate(() => window.duetStudio.view.fit());
+  await page.click('g.block[data-id="halve"]', { force: true });
+  const selected = await page.evaluate(() => {
+    const { from, to } = window.duetStudio.editor.selection();
+    return window.duetStudio.editor.getText().slice(from, to);
+  });
+  if (!/name: halve/.test(selected)) throw new Error(`the text selected is ${JSON.stringify(selected)}`);
+
+  step = 'robot: the cursor in a block\'s text selects it in the diagram';
+  await page.evaluate(() => {
+    const all = window.duetStudio.editor.getText();
+    window.duetStudio.editor.select(all.indexOf('name: to_percent') + 8);
+  });
+  await page.focus('.cm-content');
+  await page.keyboard.press('ArrowRight');
+  await page.waitForSelector('g.block.selected[data-id="to_percent"]', { timeout: 3000 });
+
+  step = 'robot: an error typed into the text is marked on the text and the block within 1 s';
+  const original = await text(page);
+  const place = original.indexOf('inputs: {u: wheels_sum}');
+  if (place < 0) throw new Error('the text to break is not in balbot.yaml');
+  // Typed where a user would: the cursor after the signal's name, one letter more.
+  await page.evaluate((at) => window.duetStudio.editor.select(at), place + 'inputs: {u: wheels_sum'.length);
+  await page.focus('.cm-content');
+  const typed = Date.now();
+  await page.keyboard.type('m');
+  await page.waitForSelector('.cm-lintRange-error', { timeout: 1000 });
+  await page.waitForSelector('g.block.marker-error[data-id="halve"]', { timeout: Math.max(1, 1000 - (Date.now() - typed)) });
+  results.robot.error_marked_ms = Date.now() - typed;
+  await page.keyboard.press('Backspace');
+  await page.waitForFunction(() => !document.querySelector('g.block.marker-error') && !document.querySelector('.cm-lintRange-error'), null, { timeout: 2000 });
+  if ((await text(page)) !== original) throw new Error('the text is not as before after the fix');
+
+  step = 'robot: edit-to-checked latency';
+  const latencies = [];
+  for (let edit = 0; edit < 20; edit += 1) {
+    const before = await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.length);
+    await page.evaluate((n) => {
+      const all = window.duetStudio.editor.getText();
+      window.duetStudio.editor.setText(all.replace(/\n$/, `\n# edit ${n}\n`));
+    }, edit);
+    await page.waitForFunction((count) => window.duetStudio.stats.checkLatencyMs.length > count, before, { timeout: 5000 });
+    latencies.push(await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.at(-1)));
+  }
+  results.robot.edit_to_checked_ms = { median: median(latencies), max: Math.max(...latencies), edits: latencies.length };
+  if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
+  await session.close();
+}
+
+// Once the last edit is checked and drawn: a drawing that arrives mid-drag would replace the ports under the mouse.
+const settled = (page) => page.waitForFunction(() => document.getElementById('check-state').dataset.state !== 'pending' && window.duetStudio.stats.checkLatencyMs.length > 0);
+
+async function dragPort(page, fromBlock, fromPort, toBlock, toPort) {
+  await settled(page);
+  await page.waitForTimeout(100);
+  await page.evaluate(() => window.duetStudio.view.fit());
+  const box = async (block, port) => (await page.$(`.block[data-id="${block}"] .port[data-port$=":${port}"] .port-hit`)).boundingBox();
+  const a = await box(fromBlock, fromPort);
+  const b = await box(toBlock, toPort);
+  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
+  await page.mouse.up();
+}
+
+async function gold() {
+  const model = await copyModel('apps/pid_demo/pid_demo.yaml');
+  const session = await studio(model);
+  const { page } = session;
+  step = 'gold: a Gain added from the palette';
+  await page.click('.palette-entry[data-type="Gain"]');
+  await page.waitForSelector('.block[data-id="gain_1"]');
+  step = 'gold: connected by dragging';
+  await dragPort(page, 'compare_angle', 'y', 'gain_1', 'u');
+  await page.waitForFunction(() => window.duetStudio.editor.getText().includes('inputs: {u: error}, outputs: {y: gain_1_y}') || /gain_1\.u reads error/.test(document.getElementById('edit-message').textContent));
+  await page.waitForSelector('.block[data-id="gain_1"] .port[data-port$=":y"]');
+  await dragPort(page, 'gain_1', 'y', 'pid', 'error');
+  await page.waitForFunction(() => window.duetStudio.editor.getText().includes('inputs: {error: gain_1_y'));
+  step = 'gold: its gain set in the form';
+  await page.click('[data-bottom-tab="block"]');
+  await page.click('.block[data-id="gain_1"]', { force: true });
+  await page.fill('[data-field="parameter:k"]', '0.5');
+  await page.press('[data-field="parameter:k"]', 'Enter');
+  await page.waitForFunction(() => window.duetStudio.editor.getText().includes('{k: 0.5}'));
+  await page.waitForFunction(() => window.duetStudio.lastModel?.ok && document.getElementById('check-state').dataset.state !== 'pending');
+  step = 'gold: saved';
+  await page.keyboard.press('Control+s');
+  await page.waitForFunction(() => document.getElementById('edit-message').textContent === 'saved', null, { timeout: 5000 });
+  step = 'gold: duet model check and duet sim accept the file';
+  await run(options.duet, ['model', 'check', model]);
+  await run(options.duet, ['sim', model, '--duration', '1', '--csv', path.join(path.dirname(model), 'gold.csv'), '--no-plot'], { cwd: path.dirname(model) });
+  results.gold = { saved: path.basename(model), gain_line: (await readFile(model, 'utf8')).split('\n').find((line) => line.includes('gain_1, type: Gain')) };
+  if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
+  await session.close();
+}
+
+// Every example model: the apps' files that are duet models (not the robot's scenarios).
+async function exampleModels() {
+  const found = [];
+  for (const app of await readdir(path.join(options.root, 'apps'), { withFileTypes: true })) {
+    if (!app.isDirectory()) continue;
+    for (const file of await readdir(path.join(options.root, 'apps', app.name))) {
+      const relative = path.join('apps', app.name, file);
+      if (file.endsWith('.yaml') && (await readFile(path.join(options.root, relative), 'utf8')).startsWith('duet_model:')) found.push(relative);
+    }
+  }
+  return found.sort();
+}
+
+async function roundtrip() {
+  results.roundtrip = [];
+  for (const example of await exampleModels()) {
+    step = `roundtrip: ${example} saved without edits`;
+    const model = await copyModel(example);
+    const before = await readFile(model);
+    const session = await studio(model);
+    await session.page.evaluate(() => window.duetStudio.editor.setText(window.duetStudio.editor.getText()));
+    await session.page.keyboard.press('Control+s');
+    await session.page.waitForFunction(() => document.getElementById('edit-message').textContent === 'saved', null, { timeout: 5000 });
+    const after = await readFile(model);
+    if (!before.equals(after)) throw new Error(`${example} changed on saving without edits`);
+    results.roundtrip.push(example);
+    await session.close();
+  }
+}
+
+// Clicks a wire where its line is (the middle of its bounding box may miss an L-shaped line), with the wire on screen.
+async function clickWire(page, id) {
+  await page.evaluate((wire) => window.duetStudio.view.select({ kind: 'wire', id: wire }), id);
+  const point = await page.locator(`g.wire[data-id="${id}"] .wire-line`).first().evaluate((line) => {
+    const at = line.getPointAtLength(line.getTotalLength() / 2);
+    const matrix = line.getScreenCTM();
+    return { x: at.x * matrix.a + matrix.e, y: at.y * matrix.d + matrix.f };
+  });
+  await page.evaluate(() => window.duetStudio.view.select(null));
+  await page.mouse.click(point.x, point.y);
+}
+
+async function simulate() {
+  const model = await copyModel('apps/pid_demo/pid_demo.yaml');
+  const session = await studio(model, ['--duration', '2']);
+  const { page } = session;
+  step = 'simulate: pid_demo run from the page';
+  await page.click('[data-bottom-tab="simulation"]');
+  const simulated = page.evaluate(() => new Promise((resolve) => window.duetStudio.hub.on('simulation', resolve)));
+  await page.click('#simulation button:has-text("Run")');
+  const message = await simulated;
+  if (message.cancelled || !message.time_s.length) throw new Error('the simulation came back empty');
+  await page.waitForSelector('#simulation .uplot canvas', { timeout: 10000 });
+  step = 'simulate: a wire clicked is plotted';
+  // Legend labels are "name [unit]".
+  const legend = () => page.$$eval('#simulation .u-legend .u-label', (labels) => labels.map((label) => label.textContent.replace(/ \[.*\]$/, '')));
+  const shown = await legend();
+  const wire = await page.evaluate((names) => window.duetStudio.lastModel.diagram.root.wires.find((candidate) => names.includes(candidate.resolved) && candidate.source), message.names.filter((name) => !shown.includes(name)));
+  if (!wire) throw new Error(`no wire of a recorded signal that is not plotted yet (plotted: ${shown.join(', ')})`);
+  await clickWire(page, wire.id);
+  await waitFor(`${wire.resolved} in the plot's legend`, 5000, async () => (await legend()).includes(wire.resolved));
+  await page.screenshot({ path: path.join(options.artefacts, 'studio-simulation.png') });
+  results.simulate = { rows: message.time_s.length, columns: message.names.length };
+  if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
+  await session.close();
+}
+
+async function external() {
+  if (!options.firmware) return;
+  step = 'external: the firmware on QEMU in lock-step';
+  const pil = await start(options.duet, ['pil', options.firmware, '--scenario', path.join(options.root, 'apps/balbot/scenarios/disturbed.yaml'), '--lock-step', '--duration', '600', '--xcp', '127.0.0.1:0', '--websocket', '127.0.0.1:0'], /tcp:\/\/127\.0\.0\.1:\d+/);
+  const model = await copyModel('apps/balbot/balbot.yaml');
+  const session = await studio(model, ['--xcp', pil.address]);
+  const { page } = session;
+  step = 'external: theta changes on its wire';
+  const label = 'text.live-value[data-measurement="theta"]';
+  await page.waitForSelector(label, { timeout: 30000 });
+  const first = await page.textContent(label);
+  await waitFor('theta to change on its wire', 20000, async () => (await page.textContent(label)) !== first);
+  step = 'external: the live values refresh with the whole top level visible';
+  await page.evaluate(() => window.duetStudio.view.fit());
+  const rate = await page.evaluate(() => new Promise((resolve) => {
+    const labels = () => [...document.querySelectorAll('text.live-value')];
+    let changes = 0;
+    let frames = 0;
+    const observer = new MutationObserver((records) => { changes += records.length; });
+    observer.observe(document.getElementById('diagram'), { subtree: true, characterData: true, childList: true });
+    // A frame of the diagram's refresh is a task in which some label changed: count the distinct ones.
+    let last = -1;
+    const tick = () => { if (changes !== last) { frames += 1; last = changes; } };
+    const sampler = setInterval(tick, 5);
+    setTimeout(() => {
+      clearInterval(sampler);
+      observer.disconnect();
+      resolve({ labels: labels().length, refreshes_per_s: frames / 5 });
+    }, 5000);
+  }));
+  results.external = { ...rate };
+  step = 'external: a wire clicked is scoped';
+  await page.click('[data-bottom-tab="live"]');
+  await page.evaluate(() => window.duetStudio.view.zoomBy(3));
+  await clickWire(page, ':theta');
+  await page.waitForSelector('#live .uplot canvas', { timeout: 10000 });
+  await page.waitForTimeout(2000);
+  await page.screenshot({ path: path.join(options.artefacts, 'studio-external.png') });
+  step = 'external: P written on its block and read back';
+  await page.click('[data-bottom-tab="block"]');
+  await page.evaluate(() => window.duetStudio.view.find('p_tuned'));
+  await page.click('g.block[data-id="p_tuned"]', { force: true });
+  await page.waitForSelector('[data-field="target:P"]', { timeout: 10000 });
+  await page.fill('[data-field="target:P"]', '0.021');
+  await page.press('[data-field="target:P"]', 'Enter');
+  const readBack = await page.evaluate(() => new Promise((resolve) => window.duetStudio.hub.on('parameter', (message) => {
+    if (message.name === 'P' && message.status === 'applied') resolve(message.value);
+  })));
+  if (Math.abs(readBack - 0.021) > 1e-6) throw new Error(`P read back as ${readBack}`);
+  results.external.p_read_back = readBack;
+  if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
+  await session.close();
+  stop(pil.child);
+}
+
+// What it needs and a build may lack: said as "skipped: ..." (ctest's skip pattern).
+function skip(reason) {
+  console.log(`skipped: ${reason}`);
+  process.exit(0);
+}
+if (!existsSync(path.join(options.root, 'web/dist/studio.html'))) skip('the front end is not built (cd web && npm ci && npm run build)');
+if (!existsSync(chromium_path)) skip(`no Chromium at ${chromium_path}`);
+if (options.firmware && !existsSync(options.firmware)) skip(`no firmware image ${options.firmware} (build the m4-qemu preset)`);
+
+try {
+  await mkdir(options.artefacts, { recursive: true });
+  work = await mkdtemp(path.join(tmpdir(), 'duet-studio-e2e-'));
+  browser = await launchChromium();
+  for (const [name, body] of Object.entries({ robot, gold, roundtrip, simulate, external })) {
+    if (!steps.has(name)) continue;
+    step = name;
+    await body();
+  }
+  results.ok = true;
+} catch (error) {
+  results.failed_step = step;
+  results.error = String(error.message ?? error).slice(0, 2000);
+} finally {
+  await browser?.close();
+  for (const child of children) child.kill('SIGINT');
+  if (work) await rm(work, { recursive: true, force: true });
+  console.log(JSON.stringify(results));
+  if (!results.ok) console.error(`studio_e2e: failed at "${results.failed_step}": ${results.error}`);
+  process.exit(results.ok ? 0 : 1);
+}
