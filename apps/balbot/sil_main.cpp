@@ -3,7 +3,10 @@
 // (--link), or the simulated robot in this process (--plant balbot), for benchmarks and comparisons.
 //
 //   balbot_sil [--link HOST:PORT | --plant NAME [--scenario FILE] [--seed N]] [--duration S] [--real-time]
-//              [--csv FILE]
+//              [--csv FILE] [--xcp HOST:PORT]
+//
+// --xcp serves the firmware's XCP slave on TCP (sil_xcp.hpp), for duet xcp, duet monitor and duet studio; its line
+// "balbot_sil: XCP on tcp://HOST:PORT" comes before the run starts.
 //
 // It ends with one line: the ticks run, the final tilt and the largest |tilt| after 4 s, numbers written so that they
 // read back as the same doubles. Exit codes: 0 the run went through, 1 it failed (a link, a plant, a file), 2 the
@@ -23,15 +26,13 @@
 #include "duet/link/tcp.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/simulation.hpp"
-#include "duet/plant/balbot/balbot_plant.hpp"
-#include "duet/plant/balbot/balbot_scenario.hpp"
+#include "duet/model/simulation_plant.hpp"
 #include "duet/plant/plant.hpp"
 #include "sil_run.hpp"
+#include "sil_xcp.hpp"
 
 namespace {
 
-using duet::Failure;
-using duet::Result;
 namespace link = duet::link;
 namespace plant = duet::plant;
 namespace sil = duet::sil;
@@ -48,21 +49,12 @@ struct Options {
   double duration_s = 10;
   bool real_time = false;
   std::string csv;
+  std::string xcp;  // HOST:PORT, or none
 };
 
 int fail(const std::string& message) {
   std::cerr << "balbot_sil: " << message << '\n';
   return failure;
-}
-
-// The robot in this process: a plant by name, or the robot of a scenario file.
-Result<std::unique_ptr<plant::Plant>> local_plant(const Options& options) {
-  if (options.scenario.empty()) return plant::make_plant(options.plant, options.seed.value_or(1));
-  if (options.plant != "balbot") return Failure{"--scenario is for --plant balbot"};
-  auto scenario = plant::load_balbot_scenario(options.scenario);
-  if (!scenario) return Failure{scenario.error()};
-  if (options.seed) scenario.value().seed = *options.seed;
-  return std::unique_ptr<plant::Plant>{plant::make_balbot_plant(scenario.value())};
 }
 
 std::string summary(const Options& options, const sil::SilResult& result, std::uint64_t late_ticks) {
@@ -103,12 +95,22 @@ int run(const Options& options) {
     plant = std::move(connected).value();
     run_options.check = [remote] { return remote->status(); };
   } else {
-    auto made = local_plant(options);
+    auto made = duet::model::make_simulation_plant(options.plant, options.scenario, options.seed);
     if (!made) return fail(made.error());
-    plant = std::move(made).value();
+    plant = std::move(made).value().plant;
     if (options.real_time) run_options.pacer = &pacer;
   }
 
+  sil::SilXcp xcp;
+  if (!options.xcp.empty()) {
+    auto address = link::parse_host_port(options.xcp);  // checked by the option's validator already
+    if (!address) return fail(address.error());
+    if (auto started = xcp.start(address.value().host, address.value().port); !started) return fail(started.error());
+    run_options.memory_lock = &xcp.memory_lock();
+    run_options.tick_started = [&xcp](double now_s) { xcp.tick_started(now_s); };
+    run_options.task_finished = [&xcp](std::size_t task) { xcp.task_finished(task); };
+    std::cout << "balbot_sil: XCP on tcp://" << address.value().host << ':' << xcp.port() << std::endl;
+  }
   auto result = sil::run_sil(*plant, run_options);
   if (!result) return fail(result.error());
   if (remote != nullptr) {
@@ -124,6 +126,15 @@ int run(const Options& options) {
   return success;
 }
 
+CLI::Validator host_port() {
+  return CLI::Validator(
+      [](const std::string& text) {
+        auto parsed = link::parse_host_port(text);
+        return parsed ? std::string{} : parsed.error();
+      },
+      "");
+}
+
 int parse_and_run(int argc, char** argv) {
   Options options;
   CLI::App app{"The robot's generated firmware on the PC, in the loop with the simulated robot", "balbot_sil"};
@@ -131,12 +142,7 @@ int parse_and_run(int argc, char** argv) {
   auto* link_option = app.add_option("--link", options.link, "HOST:PORT where 'duet plant serve balbot' listens")
                           ->capture_default_str()
                           ->type_name("HOST:PORT")
-                          ->check(CLI::Validator(
-                              [](const std::string& text) {
-                                auto parsed = link::parse_host_port(text);
-                                return parsed ? std::string{} : parsed.error();
-                              },
-                              ""));
+                          ->check(host_port());
   auto* plant_option =
       app.add_option("--plant", options.plant, "The simulated plant in this process instead of the link (balbot)")
           ->type_name("NAME")
@@ -156,6 +162,9 @@ int parse_and_run(int argc, char** argv) {
   app.add_flag("--real-time", options.real_time, "Pace the ticks with the wall clock (default: lock-step, at once)");
   app.add_option("--csv", options.csv, "Write the firmware's measurable signals, a row per tick, to FILE")
       ->type_name("FILE");
+  app.add_option("--xcp", options.xcp, "Serve the firmware's XCP slave on TCP at HOST:PORT (port 0: any free port)")
+      ->type_name("HOST:PORT")
+      ->check(host_port());
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& help) {

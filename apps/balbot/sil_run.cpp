@@ -51,6 +51,7 @@ Result<SilResult> run_sil(plant::Plant& plant, const SilOptions& options) {
   balbot::parameters = balbot::reference_parameters;
   const HardwareConnection connection{plant};
   host::LockStepPort port{description};
+  port.on_task_finished = options.task_finished;
   rt::Executive<host::LockStepPort, 16> executive{description, port};
   port.attach(executive);
   if (const rt::TaskTableError error = executive.initialize(); error != rt::TaskTableError::none) {
@@ -71,6 +72,9 @@ Result<SilResult> run_sil(plant::Plant& plant, const SilOptions& options) {
   for (std::uint64_t tick = 0; tick < ticks; ++tick) {
     const double now = static_cast<double>(tick) * period_s;
     if (options.pacer != nullptr) options.pacer->wait_until(now);
+    std::unique_lock<std::mutex> held;
+    if (options.memory_lock != nullptr) held = std::unique_lock{*options.memory_lock};
+    if (options.tick_started) options.tick_started(now);
     plant.advance(now, raise);
     port.advance(1);
     if (options.measurements != nullptr) options.measurements->record(now, result.recording);

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <optional>
 
 #include "duet/link/pacer.hpp"
@@ -28,6 +29,11 @@ struct SilOptions {
   const Measurements* measurements = nullptr;
   // Asked after every tick; a failure ends the run with it (a RemotePlant whose link broke: its status()).
   std::function<Status()> check;
+  // The firmware's XCP slave (sil_xcp.hpp): held for each tick, so that its server reaches the firmware's memory
+  // only between ticks; told each tick's time before it runs and each task that finished (the task's event).
+  std::mutex* memory_lock = nullptr;
+  std::function<void(double now_s)> tick_started;
+  std::function<void(std::size_t task)> task_finished;
 };
 
 struct SilResult {

@@ -10,11 +10,12 @@
 //   simulate  pid_demo simulated from the page: the plot drawn, a clicked wire added to it.
 //   external  (with --firmware) the robot's firmware on QEMU in lock-step (duet pil) and `duet studio --xcp`:
 //             theta's value changes on its wire, P written on its block and read back, the refresh rate of the
-//             live values with the whole top level visible.
+//             live values with the whole top level visible, a wire scoped.
+//   sil       (with --sil) the same against the firmware built for the PC (balbot_sil --xcp, in real time).
 // Every model is a copy in a folder of its own. Screenshots go to --artefacts. Prints one JSON line of results and
 // exits 1 naming the failed step.
 // Usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware balbot-pil.elf]
-//        [--steps robot,gold,roundtrip,simulate,external]
+//        [--sil balbot_sil] [--steps robot,gold,roundtrip,simulate,external,sil]
 import { spawn, execFile } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { copyFile, mkdir, mkdtemp, readdir, readFile, rm, writeFile } from 'node:fs/promises';
@@ -23,8 +24,8 @@ import path from 'node:path';
 import { promisify } from 'node:util';
 import { chromium_path, launchChromium, parseOptions, waitFor } from './browser.mjs';
 
-const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--steps LIST]';
-const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', steps: 'robot,gold,roundtrip,simulate,external' }, usage);
+const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--sil PROGRAM] [--steps LIST]';
+const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', sil: '', steps: 'robot,gold,roundtrip,simulate,external,sil' }, usage);
 if (!options.duet || !options.root || !options.artefacts) {
   console.error(usage);
   process.exit(2);
@@ -308,19 +309,33 @@ async function simulate() {
   await session.close();
 }
 
+const scenario = () => path.join(options.root, 'apps/balbot/scenarios/disturbed.yaml');
+
 async function external() {
   if (!options.firmware) return;
   step = 'external: the firmware on QEMU in lock-step';
-  const pil = await start(options.duet, ['pil', options.firmware, '--scenario', path.join(options.root, 'apps/balbot/scenarios/disturbed.yaml'), '--lock-step', '--duration', '600', '--xcp', '127.0.0.1:0', '--websocket', '127.0.0.1:0'], /tcp:\/\/127\.0\.0\.1:\d+/);
+  const pil = await start(options.duet, ['pil', options.firmware, '--scenario', scenario(), '--lock-step', '--duration', '600', '--xcp', '127.0.0.1:0', '--websocket', '127.0.0.1:0'], /tcp:\/\/127\.0\.0\.1:\d+/);
+  results.external = await externalMode(pil, 'external', 'studio-external.png');
+}
+
+async function sil() {
+  if (!options.sil) return;
+  step = 'sil: the firmware on the PC in real time';
+  const target = await start(path.resolve(options.sil), ['--plant', 'balbot', '--scenario', scenario(), '--real-time', '--duration', '600', '--xcp', '127.0.0.1:0'], /tcp:\/\/127\.0\.0\.1:\d+/);
+  results.sil = await externalMode(target, 'sil', 'studio-external-sil.png');
+}
+
+// duet studio connected to a running target of the robot's firmware.
+async function externalMode(target, name, screenshot) {
   const model = await copyModel('apps/balbot/balbot.yaml');
-  const session = await studio(model, ['--xcp', pil.address]);
+  const session = await studio(model, ['--xcp', target.address]);
   const { page } = session;
-  step = 'external: theta changes on its wire';
+  step = `${name}: theta changes on its wire`;
   const label = 'text.live-value[data-measurement="theta"]';
   await page.waitForSelector(label, { timeout: 30000 });
   const first = await page.textContent(label);
   await waitFor('theta to change on its wire', 20000, async () => (await page.textContent(label)) !== first);
-  step = 'external: the live values refresh with the whole top level visible';
+  step = `${name}: the live values refresh with the whole top level visible`;
   await page.evaluate(() => window.duetStudio.view.fit());
   const rate = await page.evaluate(() => new Promise((resolve) => {
     const labels = () => [...document.querySelectorAll('text.live-value')];
@@ -338,29 +353,41 @@ async function external() {
       resolve({ labels: labels().length, refreshes_per_s: frames / 5 });
     }, 5000);
   }));
-  results.external = { ...rate };
-  step = 'external: a wire clicked is scoped';
+  const found = { ...rate };
+  step = `${name}: a wire clicked is scoped`;
   await page.click('[data-bottom-tab="live"]');
-  await page.evaluate(() => window.duetStudio.view.zoomBy(3));
+  await page.evaluate(() => window.duetStudio.view.zoomBy(5));
   await clickWire(page, ':theta');
   await page.waitForSelector('#live .uplot canvas', { timeout: 10000 });
   await page.waitForTimeout(2000);
-  await page.screenshot({ path: path.join(options.artefacts, 'studio-external.png') });
-  step = 'external: P written on its block and read back';
+  await page.screenshot({ path: path.join(options.artefacts, screenshot) });
+  step = `${name}: P written on its block and read back`;
   await page.click('[data-bottom-tab="block"]');
   await page.evaluate(() => window.duetStudio.view.find('p_tuned'));
   await page.click('g.block[data-id="p_tuned"]', { force: true });
   await page.waitForSelector('[data-field="target:P"]', { timeout: 10000 });
   await page.fill('[data-field="target:P"]', '0.021');
+  // Listening before the write: a fast target answers before the next evaluate would.
+  await page.evaluate(() => {
+    window.readBackP = new Promise((resolve, reject) => {
+      setTimeout(() => reject(new Error('no read-back of P within 10 s')), 10000);
+      window.duetStudio.hub.on('parameter', (message) => {
+        if (message.name === 'P' && message.status !== 'reported') resolve(message);
+      });
+    });
+  });
   await page.press('[data-field="target:P"]', 'Enter');
-  const readBack = await page.evaluate(() => new Promise((resolve) => window.duetStudio.hub.on('parameter', (message) => {
-    if (message.name === 'P' && message.status === 'applied') resolve(message.value);
-  })));
+  const answer = await page.evaluate(() => window.readBackP);
+  if (answer.status !== 'applied') throw new Error(`writing P: ${answer.status} ${answer.message ?? ''}`);
+  const readBack = answer.value;
+  step = `${name}: the read-back shown on the block's form`;
+  await page.waitForFunction(() => /0\.021/.test(document.querySelector('[data-field="target:P"]')?.closest('label')?.textContent ?? ''), null, { timeout: 5000 });
   if (Math.abs(readBack - 0.021) > 1e-6) throw new Error(`P read back as ${readBack}`);
-  results.external.p_read_back = readBack;
+  found.p_read_back = readBack;
   if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
   await session.close();
-  stop(pil.child);
+  stop(target.child);
+  return found;
 }
 
 // What it needs and a build may lack: said as "skipped: ..." (ctest's skip pattern).
@@ -371,12 +398,13 @@ function skip(reason) {
 if (!existsSync(path.join(options.root, 'web/dist/studio.html'))) skip('the front end is not built (cd web && npm ci && npm run build)');
 if (!existsSync(chromium_path)) skip(`no Chromium at ${chromium_path}`);
 if (options.firmware && !existsSync(options.firmware)) skip(`no firmware image ${options.firmware} (build the m4-qemu preset)`);
+if (options.sil && !existsSync(options.sil)) skip(`no ${options.sil}`);
 
 try {
   await mkdir(options.artefacts, { recursive: true });
   work = await mkdtemp(path.join(tmpdir(), 'duet-studio-e2e-'));
   browser = await launchChromium();
-  for (const [name, body] of Object.entries({ robot, gold, roundtrip, simulate, external })) {
+  for (const [name, body] of Object.entries({ robot, gold, roundtrip, simulate, external, sil })) {
     if (!steps.has(name)) continue;
     step = name;
     await body();

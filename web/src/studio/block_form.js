@@ -3,6 +3,7 @@
 // value on the target; or, for a selected wire, its signal with a rename field.
 // Every field is validated before anything is written; writing goes through diagram_edits.
 import { element, replaceChildren } from '../dom.js';
+import { formatNumber } from '../number_format.js';
 import { modelValueProblem, parameterProblem } from './parameter_rules.js';
 import { findBlock, findWire } from './selection_sync.js';
 
@@ -46,8 +47,8 @@ export function createBlockForm(root, { edits, getLivePanel }) {
       const readBack = live.parameter(parameter.name);
       rows.push(field({
         id: `target:${parameter.name}`,
-        label: `on target${readBack ? ` (${readBack.value}${readBack.status ? `, ${readBack.status}` : ''})` : ''}`,
-        value: readBack ? String(readBack.value) : '',
+        label: targetLabel(readBack),
+        value: readBack ? formatNumber(readBack.value) : '',
         title: 'written to the running target over XCP; the file is not changed',
         validate: (typed) => modelValueProblem(parameter, typed),
         commit: (typed) => live.write(parameter.name, Number(typed)),
@@ -111,6 +112,12 @@ export function createBlockForm(root, { edits, getLivePanel }) {
   };
 
   return {
+    // A value read back from the target: shown on its row at once, even while the user is in the field.
+    readBack(name, state) {
+      const input = root.querySelector(`[data-field="target:${CSS.escape(name)}"]`);
+      const label = input?.closest('.form-row')?.querySelector('.form-label');
+      if (label) label.textContent = targetLabel(state);
+    },
     setModel(nextDiagram, nextLibrary) {
       if (nextDiagram) diagram = nextDiagram;
       if (nextLibrary) library = new Map(nextLibrary.map((entry) => [entry.type, entry]));
@@ -123,4 +130,8 @@ export function createBlockForm(root, { edits, getLivePanel }) {
     },
     refresh: render,
   };
+}
+
+function targetLabel(readBack) {
+  return `on target${readBack ? ` (${formatNumber(readBack.value)}${readBack.status ? `, ${readBack.status}` : ''})` : ''}`;
 }

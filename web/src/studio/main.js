@@ -223,6 +223,7 @@ function createPanels() {
   for (const [name, make] of Object.entries(makers)) {
     try {
       panels[name] = make({ element: byId(name), ...context });
+      if (name === 'live') panels.live.onParameter = (parameter, state) => blockForm.readBack(parameter, state);
     } catch (error) {
       // One panel's failure must not take the editor and the diagram with it.
       console.error(`the ${name} panel:`, error);

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 
 #include "duet/host/simulated_interrupt_controller.hpp"
 #include "duet/host/task_lines.hpp"
@@ -41,6 +42,12 @@ class LockStepPort {
   void skip_base_tick() {}
   void trigger_rate(std::size_t rate) { interrupts_.pend(rate); }
   void idle() { advance(); }  // so that Executive::run() runs the model as fast as the PC can
+  void task_finished(std::size_t task) {
+    if (on_task_finished) on_task_finished(task);
+  }
+
+  // Told of every task that finished, as a firmware's port tells its XCP slave (an event per task).
+  std::function<void(std::size_t task)> on_task_finished;
 
  private:
   const rt::ModelDescription& model_;
