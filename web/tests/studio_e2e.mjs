@@ -126,8 +126,16 @@ async function robot() {
   const { page } = session;
   const stats = await page.evaluate(() => window.duetStudio.view.stats());
   results.robot = { first_draw_ms: session.firstDrawMs, layout_ms: stats.layoutMs, draw_ms: stats.drawMs };
+  // For the pictures, the diagram gets most of the window (as a user drags the splitters).
+  await page.evaluate(() => {
+    document.body.style.setProperty('--bottom-height', '120px');
+    document.body.style.setProperty('--editor-width', '30vw');
+  });
+  await page.setViewportSize({ width: 2400, height: 1350 });
+  await page.waitForTimeout(200);
   await page.evaluate(() => window.duetStudio.view.fit());
   await page.screenshot({ path: path.join(options.artefacts, 'studio-balbot.png') });
+  await page.setViewportSize({ width: 1600, height: 1000 });
 
   step = 'robot: every block and wire drawn';
   const counts = await drawnCounts(page);
@@ -138,9 +146,10 @@ async function robot() {
 
   step = 'robot: a subsystem opened and left';
   await page.evaluate(() => window.duetStudio.view.fit());
-  await page.dblclick('g.block[data-id="filter"]');
-  await waitFor('the subsystem filter shown', 5000, async () => (await currentSystem(page)) === 'filter');
-  await page.waitForSelector('g.block[data-id="filter/kalman"]');
+  await page.dblclick('g.block[data-id="hall_left"]');
+  await waitFor('the subsystem hall_left shown', 5000, async () => (await currentSystem(page)) === 'hall_left');
+  await page.waitForSelector('g.block[data-id="hall_left/capture"]');
+  await page.evaluate(() => window.duetStudio.view.fit());
   await page.screenshot({ path: path.join(options.artefacts, 'studio-subsystem.png') });
   await page.click('nav.breadcrumb a[data-path=""]');
   await waitFor('the top level shown again', 5000, async () => (await currentSystem(page)) === '');
