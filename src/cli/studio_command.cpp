@@ -35,11 +35,12 @@ ExitCode run_studio(const StudioCommandOptions& options, Streams streams) {
                 << " would reach beyond this machine: add --expose to mean it\n";
     return ExitCode::usage;
   }
-  // The page picks plants and scenarios beside the model by name; the command line may name them anywhere.
+  // The page names plants and scenarios by their paths from the model's folder; the command line may name them
+  // anywhere, and the server takes those as given.
   auto beside = [&options](const std::string& file) {
-    return std::filesystem::path{file}.parent_path() == std::filesystem::path{options.model}.parent_path()
-               ? std::filesystem::path{file}.filename().string()
-               : file;
+    const std::filesystem::path relative =
+        std::filesystem::path{file}.lexically_relative(std::filesystem::path{options.model}.parent_path());
+    return relative.empty() || relative.string().starts_with("..") ? file : relative.string();
   };
   boost::asio::io_context io;
   auto studio = studio::Studio::create(

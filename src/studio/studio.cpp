@@ -218,27 +218,37 @@ class Studio::Impl {
     });
   }
 
-  // A file beside the model, by its plain name: nothing else on the machine is reachable by a request.
+  // A file beside the model (in its folder or below), by its path from there, or one the command line named: nothing
+  // else on the machine is reachable by a request.
   Result<std::string> beside(const std::string& name, const std::string& what) const {
-    if (name.empty() || name.find('/') != std::string::npos || name.starts_with('.'))
-      return Failure{what + " '" + name + "' is not the name of a file beside the model"};
-    const fs::path path = folder_ / name;
+    if (!name.empty() && (name == options_.plant || name == options_.scenario)) return name;
+    const fs::path relative{name};
+    bool plain = !name.empty() && relative.is_relative();
+    for (const fs::path& part : relative) plain = plain && !part.empty() && !part.string().starts_with('.');
+    if (!plain) return Failure{what + " '" + name + "' is not the name of a file beside the model"};
+    const fs::path path = folder_ / relative;
     if (!fs::is_regular_file(path)) return Failure{what + " '" + name + "' is not a file beside the model"};
     return path.string();
   }
 
+  // The YAML files beside the model and in its subfolders (a plant model, the robot's scenarios), by their paths
+  // from the model's folder.
   json files_beside() const {
-    json files = json::array();
-    std::error_code error;
     std::vector<std::string> names;
-    for (const fs::directory_entry& entry : fs::directory_iterator{folder_, error}) {
-      const fs::path& path = entry.path();
-      if (entry.is_regular_file() && path.extension() == ".yaml" && path.filename() != options_.model.filename())
-        names.push_back(path.filename().string());
+    std::error_code error;
+    for (fs::recursive_directory_iterator entry{folder_, error}, end; !error && entry != end; entry.increment(error)) {
+      const fs::path relative = entry->path().lexically_relative(folder_);
+      const bool hidden = entry->path().filename().string().starts_with('.');
+      if (entry->is_directory()) {
+        if (hidden || entry.depth() >= 1) entry.disable_recursion_pending();  // one level down, no further
+        continue;
+      }
+      if (!hidden && entry->is_regular_file() && relative.extension() == ".yaml" &&
+          relative != options_.model.filename())
+        names.push_back(relative.string());
     }
     std::sort(names.begin(), names.end());
-    for (std::string& name : names) files.push_back(std::move(name));
-    return files;
+    return names;
   }
 
   bool simulate(dashboard::Client& client, const json& request) {

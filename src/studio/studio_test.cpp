@@ -136,6 +136,16 @@ TEST_F(StudioTest, GeneratesTheFilesAndTheTaskTable) {
   EXPECT_EQ((*generated)["schedulability"]["verdict"], "schedulable") << (*generated)["schedulability"].dump(2);
 }
 
+TEST_F(StudioTest, OffersTheYamlFilesBesideTheModelAndBelowIt) {
+  fs::create_directories(folder / "scenarios");
+  std::ofstream{folder / "scenarios/held.yaml"} << "held: true\n";
+  std::ofstream{folder / "heater.yaml"} << "duet_model: 1\n";
+  WebSocketClient client{studio->port()};
+  const auto welcome = client.next("studio");
+  ASSERT_TRUE(welcome);
+  EXPECT_EQ((*welcome)["files"], json::array({"heater.yaml", "scenarios/held.yaml"}));
+}
+
 TEST_F(StudioTest, AnswersBadRequestsWithErrorsAndReachesNoFileOutsideTheModelsFolder) {
   WebSocketClient client{studio->port()};
   client.send({{"type", "simulate"}, {"text", original}, {"plant", "balbot"}, {"scenario", "../../etc/passwd"}});
@@ -143,6 +153,12 @@ TEST_F(StudioTest, AnswersBadRequestsWithErrorsAndReachesNoFileOutsideTheModelsF
   ASSERT_TRUE(error);
   EXPECT_EQ((*error)["request"], "simulate");
   EXPECT_NE((*error)["message"].get<std::string>().find("beside the model"), std::string::npos);
+  for (const char* outside : {"/etc/passwd", "scenarios/../../x.yaml", ".hidden.yaml"}) {
+    client.send({{"type", "simulate"}, {"text", original}, {"plant", "balbot"}, {"scenario", outside}});
+    error = client.next("error");
+    ASSERT_TRUE(error) << outside;
+    EXPECT_NE((*error)["message"].get<std::string>().find("beside the model"), std::string::npos) << outside;
+  }
   client.send({{"type", "check"}});
   error = client.next("error");
   ASSERT_TRUE(error);
