@@ -42,14 +42,19 @@ ExitCode run_studio(const StudioCommandOptions& options, Streams streams) {
         std::filesystem::path{file}.lexically_relative(std::filesystem::path{options.model}.parent_path());
     return relative.empty() || relative.string().starts_with("..") ? file : relative.string();
   };
+  // Member by member: GCC 12 at -O3 takes nested braced options for read before they are written.
+  studio::StudioOptions studio_options;
+  studio_options.model = options.model;
+  studio_options.server.address = listen.host;
+  studio_options.server.port = listen.port;
+  studio_options.server.web_root = options.web;
+  studio_options.server.log_name = "duet studio";
+  studio_options.plant = options.plant.ends_with(".yaml") ? beside(options.plant) : options.plant;
+  studio_options.scenario = options.scenario.empty() ? std::string{} : beside(options.scenario);
+  studio_options.duration_s = options.duration_s;
+  studio_options.xcp = options.xcp;
   boost::asio::io_context io;
-  auto studio = studio::Studio::create(
-      io, {.model = options.model,
-           .server = {.address = listen.host, .port = listen.port, .web_root = options.web, .log_name = "duet studio"},
-           .plant = options.plant.ends_with(".yaml") ? beside(options.plant) : options.plant,
-           .scenario = options.scenario.empty() ? std::string{} : beside(options.scenario),
-           .duration_s = options.duration_s,
-           .xcp = options.xcp});
+  auto studio = studio::Studio::create(io, std::move(studio_options));
   if (!studio) {
     streams.err << "duet studio: " << studio.error() << '\n';
     return ExitCode::failure;

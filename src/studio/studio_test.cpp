@@ -31,7 +31,11 @@ class StudioTest : public ::testing::Test {
     fs::copy_file(fs::path{DUET_SOURCE_DIR} / "apps/pid_demo/pid_demo.yaml", model);
     fs::copy_file(fs::path{DUET_SOURCE_DIR} / "apps/pid_demo/motor_logic.hpp", folder / "motor_logic.hpp");
     original = read_text_file(model.string()).value();
-    auto created = Studio::create(io, {.model = model, .plant = "none", .duration_s = 0.5});
+    StudioOptions options;  // member by member: GCC 12 at -O3 takes braced nested options for read before written
+    options.model = model;
+    options.plant = "none";
+    options.duration_s = 0.5;
+    auto created = Studio::create(io, std::move(options));
     ASSERT_TRUE(created.ok()) << created.error();
     studio = std::move(created).value();
     ASSERT_TRUE(studio->start().ok());

@@ -16,13 +16,14 @@
 // exits 1 naming the failed step.
 // Usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware balbot-pil.elf]
 //        [--sil balbot_sil] [--steps robot,gold,roundtrip,simulate,external,sil]
-import { spawn, execFile } from 'node:child_process';
+import { execFile } from 'node:child_process';
 import { existsSync } from 'node:fs';
-import { copyFile, mkdir, mkdtemp, readdir, readFile, rm, writeFile } from 'node:fs/promises';
+import { mkdir, mkdtemp, readdir, readFile, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { chromium_path, launchChromium, parseOptions, waitFor } from './browser.mjs';
+import { measureLiveRefresh, median, StudioSessions } from './studio_session.mjs';
 
 const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--sil PROGRAM] [--steps LIST]';
 const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', sil: '', steps: 'robot,gold,roundtrip,simulate,external,sil' }, usage);
@@ -35,62 +36,18 @@ options.root = path.resolve(options.root);
 const steps = new Set(options.steps.split(','));
 const run = promisify(execFile);
 const results = { ok: false };
-const children = [];
+let sessions;
 let step = 'start';
 let work;
 let browser;
 
-// A child program whose first line naming an http:// or tcp:// address is awaited; its output kept for failures.
-function start(program, args, pattern) {
-  const child = spawn(program, args, { stdio: ['ignore', 'pipe', 'pipe'] });
-  children.push(child);
-  let output = '';
-  return new Promise((resolve, reject) => {
-    const timer = setTimeout(() => reject(new Error(`${path.basename(program)} ${args[0]} said nothing matching ${pattern}:\n${output}`)), 30000);
-    const take = (data) => {
-      output += data;
-      const found = output.match(pattern);
-      if (found) {
-        clearTimeout(timer);
-        resolve({ child, address: found[0], output: () => output });
-      }
-    };
-    child.stdout.on('data', take);
-    child.stderr.on('data', take);
-    child.on('exit', (code) => reject(new Error(`${path.basename(program)} ended (${code}):\n${output}`)));
-  });
-}
-
-function stop(child) {
-  child.removeAllListeners('exit');
-  child.kill('SIGINT');
-}
-
-// A copy of a model's folder: the model and the files beside it (Code blocks' headers, scenarios).
-async function copyModel(relative) {
-  const from = path.join(options.root, path.dirname(relative));
-  const to = await mkdtemp(path.join(work, `${path.basename(relative, '.yaml')}-`));
-  for (const entry of await readdir(from, { withFileTypes: true })) {
-    if (entry.isFile()) await copyFile(path.join(from, entry.name), path.join(to, entry.name));
-  }
-  return path.join(to, path.basename(relative));
-}
-
-async function studio(model, extra = []) {
-  const server = await start(options.duet, ['studio', model, '--listen', '127.0.0.1:0', '--web', path.join(options.root, 'web/dist'), ...extra], /http:\/\/127\.0\.0\.1:\d+\//);
-  const page = await browser.newPage({ viewport: { width: 1600, height: 1000 } });
-  const errors = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  const opened = Date.now();
-  await page.goto(server.address);
-  await page.waitForFunction(() => window.duetStudio?.lastModel && document.querySelector('g.block'), null, { timeout: 30000 });
-  const firstDrawMs = Date.now() - opened;
-  return { server, page, errors, firstDrawMs, close: async () => { await page.close(); stop(server.child); } };
-}
+const start = (...args) => sessions.start(...args);
+const stop = (child) => StudioSessions.stop(child);
+const copyModel = (relative) => sessions.copyModel(relative);
+const studio = (model, extra) => sessions.open(model, extra);
 
 const text = (page) => page.evaluate(() => window.duetStudio.editor.getText());
 const currentSystem = (page) => page.evaluate(() => window.duetStudio.view.currentSystem());
-const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
 // Every system of the diagram, shown one after the other: the blocks and wires drawn, summed.
 async function drawnCounts(page) {
@@ -346,22 +303,7 @@ async function externalMode(target, name, screenshot) {
   await waitFor('theta to change on its wire', 20000, async () => (await page.textContent(label)) !== first);
   step = `${name}: the live values refresh with the whole top level visible`;
   await page.evaluate(() => window.duetStudio.view.fit());
-  const rate = await page.evaluate(() => new Promise((resolve) => {
-    const labels = () => [...document.querySelectorAll('text.live-value')];
-    let changes = 0;
-    let frames = 0;
-    const observer = new MutationObserver((records) => { changes += records.length; });
-    observer.observe(document.getElementById('diagram'), { subtree: true, characterData: true, childList: true });
-    // A frame of the diagram's refresh is a task in which some label changed: count the distinct ones.
-    let last = -1;
-    const tick = () => { if (changes !== last) { frames += 1; last = changes; } };
-    const sampler = setInterval(tick, 5);
-    setTimeout(() => {
-      clearInterval(sampler);
-      observer.disconnect();
-      resolve({ labels: labels().length, refreshes_per_s: frames / 5 });
-    }, 5000);
-  }));
+  const rate = await measureLiveRefresh(page, 5);
   const found = { ...rate };
   step = `${name}: a wire clicked is scoped`;
   await page.click('[data-bottom-tab="live"]');
@@ -413,6 +355,7 @@ try {
   await mkdir(options.artefacts, { recursive: true });
   work = await mkdtemp(path.join(tmpdir(), 'duet-studio-e2e-'));
   browser = await launchChromium();
+  sessions = new StudioSessions({ duet: options.duet, root: options.root, work, browser });
   for (const [name, body] of Object.entries({ robot, gold, roundtrip, simulate, external, sil })) {
     if (!steps.has(name)) continue;
     step = name;
@@ -424,7 +367,7 @@ try {
   results.error = String(error.message ?? error).slice(0, 2000);
 } finally {
   await browser?.close();
-  for (const child of children) child.kill('SIGINT');
+  sessions?.stopAll();
   if (work) await rm(work, { recursive: true, force: true });
   console.log(JSON.stringify(results));
   if (!results.ok) console.error(`studio_e2e: failed at "${results.failed_step}": ${results.error}`);
