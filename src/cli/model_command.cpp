@@ -10,9 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <set>
 #include <memory>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 

@@ -2,18 +2,16 @@
 
 #include <CLI/CLI.hpp>
 #include <boost/asio.hpp>
-#include <poll.h>
 
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "duet/dashboard/static_files.hpp"
 #include "duet/link/tcp.hpp"
+#include "duet/monitor/monitor_target.hpp"
 #include "duet/support/text_file.hpp"
 #include "host_port_validator.hpp"
-#include "duet/monitor/monitor_target.hpp"
-#include "stop_signals.hpp"
+#include "page_server.hpp"
 
 namespace duet::cli {
 namespace {
@@ -35,12 +33,9 @@ ExitCode fail(Streams streams, const std::string& message) {
 }
 
 ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
-  auto listen = link::parse_host_port(options.listen).value();  // checked by the validator
-  if (listen.host != "127.0.0.1" && !options.expose) {
-    streams.err << "duet monitor: --listen " << options.listen
-                << " would reach beyond this machine: add --expose to mean it\n";
-    return ExitCode::usage;
-  }
+  const auto address = listen_address(options.listen, options.expose, "duet monitor", streams.err);
+  if (!address) return ExitCode::usage;
+  const link::HostPort& listen = *address;
   auto text = read_text_file(options.a2l_file);
   if (!text) return fail(streams, text.error());
   auto a2l = xcp::host::read_a2l(text.value(), options.a2l_file);
@@ -67,11 +62,7 @@ ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
   if (Status started = monitor.value()->start(); !started) return fail(streams, started.error());
   streams.out << "duet monitor: dashboard on http://" << listen.host << ':' << monitor.value()->port()
               << "/ for the target at " << xcp::host::to_string(target) << " (Ctrl-C stops)" << std::endl;
-  std::thread serving{[&io] { io.run(); }};
-  pollfd signal_fd{stop.fd(), POLLIN, 0};
-  while (!stop.received()) ::poll(&signal_fd, 1, -1);
-  io.stop();
-  serving.join();
+  serve_until_stopped(io, stop);
   monitor.value()->stop();
   streams.out << "duet monitor: stopped\n";
   return ExitCode::success;

@@ -89,7 +89,7 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
   const auto checked = load_checked_model(options.file, streams.err);
   if (!checked) return ExitCode::failure;
   auto plant = model::make_simulation_plant(options.plant, options.scenario,
-                                           options.seed_given ? std::optional{options.seed} : std::nullopt);
+                                            options.seed_given ? std::optional{options.seed} : std::nullopt);
   if (!plant) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;

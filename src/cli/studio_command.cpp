@@ -2,17 +2,15 @@
 
 #include <CLI/CLI.hpp>
 #include <boost/asio.hpp>
-#include <poll.h>
 
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "duet/dashboard/static_files.hpp"
 #include "duet/link/tcp.hpp"
 #include "duet/studio/studio.hpp"
 #include "host_port_validator.hpp"
-#include "stop_signals.hpp"
+#include "page_server.hpp"
 
 namespace duet::cli {
 namespace {
@@ -29,12 +27,9 @@ struct StudioCommandOptions {
 };
 
 ExitCode run_studio(const StudioCommandOptions& options, Streams streams) {
-  auto listen = link::parse_host_port(options.listen).value();  // checked by the validator
-  if (listen.host != "127.0.0.1" && !options.expose) {
-    streams.err << "duet studio: --listen " << options.listen
-                << " would reach beyond this machine: add --expose to mean it\n";
-    return ExitCode::usage;
-  }
+  const auto address = listen_address(options.listen, options.expose, "duet studio", streams.err);
+  if (!address) return ExitCode::usage;
+  const link::HostPort& listen = *address;
   // The page names plants and scenarios by their paths from the model's folder; the command line may name them
   // anywhere, and the server takes those as given.
   auto beside = [&options](const std::string& file) {
@@ -66,11 +61,7 @@ ExitCode run_studio(const StudioCommandOptions& options, Streams streams) {
   }
   streams.out << "duet studio: " << options.model << " on http://" << listen.host << ':' << studio.value()->port()
               << "/ (Ctrl-C stops)" << std::endl;
-  std::thread serving{[&io] { io.run(); }};
-  pollfd signal_fd{stop.fd(), POLLIN, 0};
-  while (!stop.received()) ::poll(&signal_fd, 1, -1);
-  io.stop();
-  serving.join();
+  serve_until_stopped(io, stop);
   studio.value()->stop();
   streams.out << "duet studio: stopped\n";
   return ExitCode::success;
@@ -80,9 +71,7 @@ ExitCode run_studio(const StudioCommandOptions& options, Streams streams) {
 
 Action define_studio_command(CLI::App& command) {
   auto options = std::make_shared<StudioCommandOptions>();
-  command.add_option("model", options->model, "The model file (docs/MODELS.md)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  command.add_option("model", options->model, "The model file (docs/MODELS.md)")->required()->check(CLI::ExistingFile);
   command.add_option("--plant", options->plant, "The page's plant: a name, or a plant model's file")
       ->capture_default_str();
   command.add_option("--scenario", options->scenario, "The page's scenario for --plant balbot")
@@ -90,7 +79,8 @@ Action define_studio_command(CLI::App& command) {
   command.add_option("--duration", options->duration_s, "The page's simulation duration in seconds")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
-  command.add_option("--xcp", options->xcp, "A running target's XCP (tcp://host:port or udp://host:port): external mode");
+  command.add_option("--xcp", options->xcp,
+                     "A running target's XCP (tcp://host:port or udp://host:port): external mode");
   command.add_option("--listen", options->listen, "Address:port of the page (HTTP and WebSocket)")
       ->capture_default_str()
       ->check(host_port_validator());

@@ -9,8 +9,8 @@
 #include "pil_command.hpp"
 #include "plant_command.hpp"
 #include "sched_command.hpp"
-#include "studio_command.hpp"
 #include "sim_command.hpp"
+#include "studio_command.hpp"
 #include "subcommand.hpp"
 #include "xcp_command.hpp"
 

@@ -60,17 +60,18 @@ constexpr ParameterDocumentation counter[] = {count("limit", 1, "the last count 
 constexpr ParameterDocumentation step[] = {at_least("time_s", 0, "when it steps, counted in steps of its rate"),
                                            number("initial", "the output before (default 0)"),
                                            number("final", "the output from time_s on"), type("its type")};
-constexpr ParameterDocumentation pulse[] = {
-    at_least("period_s", 0, "the pulse period"), at_least("width_s", 0, "how long each pulse is"),
-    at_least("delay_s", 0, "when the first pulse starts (default 0)"),
-    number("amplitude", "the pulse's value (default 1)"), type("its type")};
+constexpr ParameterDocumentation pulse[] = {at_least("period_s", 0, "the pulse period"),
+                                            at_least("width_s", 0, "how long each pulse is"),
+                                            at_least("delay_s", 0, "when the first pulse starts (default 0)"),
+                                            number("amplitude", "the pulse's value (default 1)"), type("its type")};
 constexpr ParameterDocumentation unit_delay[] = {number("initial", "the output of the first step (default 0)")};
-constexpr ParameterDocumentation integrator[] = {
-    number("gain", "K in y += K Ts u (default 1)"), number("initial", "the state at the start (default 0)"),
-    number("lower", "the state's lower limit (default none)"), number("upper", "the state's upper limit (default none)")};
+constexpr ParameterDocumentation integrator[] = {number("gain", "K in y += K Ts u (default 1)"),
+                                                 number("initial", "the state at the start (default 0)"),
+                                                 number("lower", "the state's lower limit (default none)"),
+                                                 number("upper", "the state's upper limit (default none)")};
 constexpr ParameterDocumentation derivative[] = {number("gain", "K in K (u - u before) / Ts (default 1)")};
-constexpr ParameterDocumentation filtered_derivative[] = {
-    number("gain", "the derivative gain (default 1)"), at_least("n", 0, "the filter coefficient N, 1/s")};
+constexpr ParameterDocumentation filtered_derivative[] = {number("gain", "the derivative gain (default 1)"),
+                                                          at_least("n", 0, "the filter coefficient N, 1/s")};
 constexpr ParameterDocumentation transfer_function[] = {
     number("numerator", "b0..bN, highest power of z first"),
     number("denominator", "a0..aN, highest power of z first (a0 not 0)")};
@@ -99,7 +100,10 @@ constexpr ParameterDocumentation pid[] = {
     word("anti_windup", "clamping stops integrating while the output is limited (default none)", anti_windups)};
 constexpr ParameterDocumentation edge_detect[] = {word("edge", "which change of u gives true", edges)};
 constexpr ParameterDocumentation rate_transition[] = {
-    word("mode", "deterministic between periodic rates, latest where an interrupt task meets a rate (default: what the rates need)", transitions),
+    word("mode",
+         "deterministic between periodic rates, latest where an interrupt task meets a rate (default: what the rates "
+         "need)",
+         transitions),
     number("initial", "the output before the first value arrives (default 0)")};
 constexpr ParameterDocumentation gpio_in[] = {word("pin", "the pin, by the port's name for it (LED0, PE8)")};
 constexpr ParameterDocumentation gpio_out[] = {word("pin", "the pin, by the port's name for it (LED0, PA5)")};
@@ -107,8 +111,7 @@ constexpr ParameterDocumentation pwm_out[] = {word("timer", "the timer (TIM1)"),
                                               at_least("frequency_hz", 0, "the PWM frequency")};
 constexpr ParameterDocumentation input_capture[] = {word("timer", "the timer (TIM2)"),
                                                     word("channel", "its channel (1)")};
-constexpr ParameterDocumentation spi_dma[] = {word("spi", "the SPI (SPI5)"),
-                                              count("size", 1, "bytes per transfer")};
+constexpr ParameterDocumentation spi_dma[] = {word("spi", "the SPI (SPI5)"), count("size", 1, "bytes per transfer")};
 constexpr ParameterDocumentation exti[] = {word("line", "the external interrupt line (EXTI8)")};
 constexpr ParameterDocumentation adc[] = {word("adc", "the converter (ADC1)"), word("channel", "its channel (6)"),
                                           count("count", 1, "conversions per DMA sequence")};
@@ -148,8 +151,7 @@ constexpr BlockDocumentation table[] = {
     {"DiscreteDerivative", "discrete", "gain·(u - u before)/Ts", derivative},
     {"FilteredDerivative", "discrete", "The PID's filtered derivative on its own: gain·N/(1 + N·Ts/(z-1))",
      filtered_derivative},
-    {"TransferFunction", "discrete", "A discrete transfer function in z, direct form II transposed",
-     transfer_function},
+    {"TransferFunction", "discrete", "A discrete transfer function in z, direct form II transposed", transfer_function},
     {"StateSpace", "discrete", "x(k+1) = A x + B u, y = C x + D u", state_space},
     {"Mean", "math", "The mean of a vector's elements", {}},
     {"MovingAverage", "discrete", "The mean of the last window inputs", moving_average},
@@ -159,8 +161,7 @@ constexpr BlockDocumentation table[] = {
      "Parallel PID with derivative filter N, forward Euler, output limits and anti-windup (Simulink's form)", pid},
     {"MatrixMultiply", "math", "a·b, row-major; a vector is a column", {}},
     {"EdgeDetect", "logic", "True in the step in which u changes as chosen", edge_detect},
-    {"RateTransition", "rates", "Where two rates meet: hands a value from one task to another safely",
-     rate_transition},
+    {"RateTransition", "rates", "Where two rates meet: hands a value from one task to another safely", rate_transition},
     {"Outport", "structure", "Marks a signal as an output of the model", {}},
     {"GpioIn", "hardware", "A pin's level", gpio_in},
     {"GpioOut", "hardware", "Sets a pin's level", gpio_out},
@@ -175,16 +176,18 @@ constexpr BlockDocumentation table[] = {
     {"IpcReceive", "hardware", "The values Linux sent last over the application channel", ipc_receive},
     {"PlantInput", "hardware", "A plant model's side of a resource the controller writes", plant_input},
     {"PlantOutput", "hardware", "A plant model's side of a resource the controller reads", plant_output},
-    {"Subsystem", "structure",
-     "Blocks of their own, with named ports; triggered by an interrupt or an edge, or enabled by a signal", {}},
+    {"Subsystem",
+     "structure",
+     "Blocks of their own, with named ports; triggered by an interrupt or an edge, or enabled by a signal",
+     {}},
     {"Code", "structure", "A C++ function beside the model, with declared ports, parameters and state", {}},
 };
 
 }  // namespace
 
 const BlockDocumentation* find_block_documentation(std::string_view type) {
-  const auto found =
-      std::find_if(std::begin(table), std::end(table), [type](const BlockDocumentation& entry) { return entry.type == type; });
+  const auto found = std::find_if(std::begin(table), std::end(table),
+                                  [type](const BlockDocumentation& entry) { return entry.type == type; });
   return found == std::end(table) ? nullptr : found;
 }
 

@@ -37,7 +37,8 @@ TEST(BlockDocumentation, GivesChoicesAndLimits) {
   const ParameterDocumentation* op = find_parameter_documentation(*compare, "operator");
   ASSERT_NE(op, nullptr);
   EXPECT_EQ(op->choices.size(), 6U);
-  const ParameterDocumentation* window = find_parameter_documentation(*find_block_documentation("MovingAverage"), "window");
+  const ParameterDocumentation* window =
+      find_parameter_documentation(*find_block_documentation("MovingAverage"), "window");
   ASSERT_NE(window, nullptr);
   EXPECT_TRUE(window->integer);
   EXPECT_EQ(window->minimum, 1.0);

@@ -130,8 +130,6 @@ class FlatModel {
     }
   }
 
-
-
   std::map<std::string, std::string> aliases_;  // a subsystem's port signal -> the signal it stands for
 };
 

@@ -16,9 +16,9 @@
 
 #include "duet/dashboard/dashboard.hpp"
 #include "duet/model/generate.hpp"
+#include "duet/monitor/executive_account_layout.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
-#include "duet/monitor/executive_account_layout.hpp"
 
 namespace duet::monitor {
 namespace {
@@ -379,7 +379,7 @@ class MonitorTarget::Impl {
   std::optional<ExecutiveAccountLayout> account_;  // read by the worker only, after choose()
   double base_period_s_ = 0;                       // the fastest periodic event's
   std::optional<dashboard::Dashboard> own_dashboard_;
-  dashboard::Dashboard* dashboard_ = nullptr;  // the own one or the owner's
+  dashboard::Dashboard* dashboard_ = nullptr;            // the own one or the owner's
   std::vector<std::optional<double>> parameter_values_;  // on the io thread
   std::thread worker_;
 

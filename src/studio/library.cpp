@@ -17,10 +17,14 @@ json names(const std::vector<std::string_view>& list) {
 
 json parameter_json(const model::ParameterSpec& spec, const model::ParameterDocumentation* documentation) {
   using Kind = model::ParameterDocumentation::Kind;
-  json entry = {{"name", spec.name}, {"required", spec.required}, {"kind", "number"}, {"choices", json::array()},
-                {"min", nullptr},    {"max", nullptr},          {"integer", false}, {"description", ""}};
+  json entry = {{"name", spec.name}, {"required", spec.required},
+                {"kind", "number"},  {"choices", json::array()},
+                {"min", nullptr},    {"max", nullptr},
+                {"integer", false},  {"description", ""}};
   if (documentation == nullptr) return entry;
-  entry["kind"] = documentation->kind == Kind::number ? "number" : documentation->kind == Kind::word ? "word" : "data_type";
+  entry["kind"] = documentation->kind == Kind::number ? "number"
+                  : documentation->kind == Kind::word ? "word"
+                                                      : "data_type";
   for (std::string_view choice : documentation->choices) entry["choices"].push_back(choice);
   if (documentation->minimum) entry["min"] = *documentation->minimum;
   if (documentation->maximum) entry["max"] = *documentation->maximum;

@@ -13,10 +13,10 @@
 namespace duet::studio {
 namespace {
 
-using nlohmann::json;
 using model::Block;
 using model::Connection;
 using model::Location;
+using nlohmann::json;
 
 // The reader stops at its first problem and says it as `file:line:column: error: what (hint)`.
 model::Diagnostic parse_problem(const std::string& text) {
@@ -87,7 +87,8 @@ std::string value_text(const model::Value& value) {
       text += "]";
     }
   } else {
-    for (std::size_t index = 0; index < value.elements.size(); ++index) text += (index == 0 ? "" : ", ") + element(index);
+    for (std::size_t index = 0; index < value.elements.size(); ++index)
+      text += (index == 0 ? "" : ", ") + element(index);
   }
   return text + "]";
 }
@@ -292,9 +293,10 @@ class DiagramBuilder {
   json arguments(const Block& block) const {
     json result = json::array();
     for (const auto& [name, parameter] : block.parameters) {
-      const bool tunable = !parameter.reference.empty() &&
-                           std::any_of(model_.parameters.begin(), model_.parameters.end(),
-                                       [&](const model::Parameter& model) { return model.name == parameter.reference; });
+      const bool tunable =
+          !parameter.reference.empty() &&
+          std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                      [&](const model::Parameter& model) { return model.name == parameter.reference; });
       json entry = {{"name", name},
                     {"text", parameter.text},
                     {"reference", parameter.reference.empty() ? json() : json(parameter.reference)},
@@ -352,9 +354,9 @@ class DiagramBuilder {
   json wire_json(const Wires::Wire& wire, const std::string& scope, const std::string& path) const {
     const std::string resolved = names_.model_wide(scope, wire.signal);
     Location location = wire.driver_location.value_or(wire.first_location);
-    json entry = {{"id", path + ":" + wire.signal}, {"signal", wire.signal},     {"resolved", resolved},
-                  {"measurement", nullptr},         {"source", wire.source},     {"targets", wire.targets},
-                  {"type", nullptr},                {"unit", ""}};
+    json entry = {
+        {"id", path + ":" + wire.signal}, {"signal", wire.signal},   {"resolved", resolved}, {"measurement", nullptr},
+        {"source", wire.source},          {"targets", wire.targets}, {"type", nullptr},      {"unit", ""}};
     if (scope.empty()) {
       const auto declared =
           std::find_if(model_.signals.begin(), model_.signals.end(),
@@ -399,8 +401,8 @@ json tasks_json(const model::Program& program) {
          {"name", task.name},
          {"function", model::task_function_name(task)},
          {"kind", periodic ? "periodic" : "interrupt"},
-         {"period_us", periodic ? json(static_cast<double>(task.rate.multiple) * program.model->base_period_us)
-                                : json()},
+         {"period_us",
+          periodic ? json(static_cast<double>(task.rate.multiple) * program.model->base_period_us) : json()},
          {"interrupt", periodic ? json() : json(task.rate.interrupt)},
          {"priority", task.priority ? json(*task.priority) : json()},
          {"blocks", task.outputs.size()}});
@@ -436,7 +438,9 @@ CheckedText check_text(std::string_view text, const std::string& file) {
 }
 
 json model_view(const CheckedText& checked, std::string_view text) {
-  json view = {{"ok", checked.program.has_value()}, {"diagnostics", json::array()}, {"diagram", nullptr},
+  json view = {{"ok", checked.program.has_value()},
+               {"diagnostics", json::array()},
+               {"diagram", nullptr},
                {"tasks", checked.program ? tasks_json(*checked.program) : json::array()}};
   if (checked.model) view["diagram"] = DiagramBuilder{checked, text}.diagram();
   for (const model::Diagnostic& diagnostic : checked.diagnostics) {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "duet/support/text_file.hpp"
 #include "duet/studio/library.hpp"
+#include "duet/support/text_file.hpp"
 
 namespace duet::studio {
 namespace {

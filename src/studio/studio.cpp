@@ -71,14 +71,14 @@ class Studio::Impl {
     dashboard_.emplace(io_, server,
                        dashboard::Backend{.set = [this](dashboard::Client& client, const std::string& name,
                                                         double value) { set(client, name, value); },
-                                          .describe = [this](dashboard::Client&) {
-                                            if (monitor_) monitor_->describe();
-                                          },
+                                          .describe =
+                                              [this](dashboard::Client&) {
+                                                if (monitor_) monitor_->describe();
+                                              },
                                           .status = [this] { return status(); },
                                           .joined = [this](dashboard::Client& client) { welcome(client); },
-                                          .request = [this](dashboard::Client& client, const json& request) {
-                                            return handle(client, request);
-                                          }});
+                                          .request = [this](dashboard::Client& client,
+                                                            const json& request) { return handle(client, request); }});
     if (Status started = dashboard_->start(); !started) return started;
     watch_file();
     if (!options_.xcp.empty()) connect(options_.xcp, nullptr);
@@ -254,8 +254,8 @@ class Studio::Impl {
   bool simulate(dashboard::Client& client, const json& request) {
     const auto text = string_member(request, "text");
     if (!text) return reply_error(client, "simulate", "simulate needs \"text\": the model's text");
-    SimulationRequest job{*text, options_.model.string(), options_.plant, {}, options_.duration_s,
-                          request.contains("id") ? request["id"] : json(0)};
+    SimulationRequest job{*text, options_.model.string(), options_.plant,
+                          {},    options_.duration_s,     request.contains("id") ? request["id"] : json(0)};
     if (const auto plant = string_member(request, "plant"); plant && !plant->empty()) {
       job.plant = *plant;
       if (plant->ends_with(".yaml")) {

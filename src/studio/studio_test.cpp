@@ -73,8 +73,8 @@ TEST_F(StudioTest, WelcomesWithTheFileTheLibraryAndTheCheckedModel) {
 
 TEST_F(StudioTest, ChecksEachTextItIsSent) {
   WebSocketClient client{studio->port()};
-  client.send({{"type", "check"}, {"text", original + "  - {name: bad, type: Gain, inputs: {u: nowhere}}\n"},
-               {"seq", 7}});
+  client.send(
+      {{"type", "check"}, {"text", original + "  - {name: bad, type: Gain, inputs: {u: nowhere}}\n"}, {"seq", 7}});
   auto checked = client.next("model");
   while (checked && (*checked)["seq"] != 7) checked = client.next("model");
   ASSERT_TRUE(checked);

@@ -23,7 +23,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { chromium_path, launchChromium, parseOptions, waitFor } from './browser.mjs';
-import { measureLiveRefresh, median, StudioSessions } from './studio_session.mjs';
+import { dragPort, measureLiveRefresh, median, StudioSessions } from './studio_session.mjs';
 
 const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--sil PROGRAM] [--steps LIST]';
 const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', sil: '', steps: 'robot,gold,roundtrip,simulate,external,sil' }, usage);
@@ -164,17 +164,10 @@ async function robot() {
 // Once the last edit is checked and drawn: a drawing that arrives mid-drag would replace the ports under the mouse.
 const settled = (page) => page.waitForFunction(() => document.getElementById('check-state').dataset.state !== 'pending' && window.duetStudio.stats.checkLatencyMs.length > 0);
 
-async function dragPort(page, fromBlock, fromPort, toBlock, toPort) {
+async function dragPortOnceDrawn(page, ...ends) {
   await settled(page);
   await page.waitForTimeout(100);
-  await page.evaluate(() => window.duetStudio.view.fit());
-  const box = async (block, port) => (await page.$(`.block[data-id="${block}"] .port[data-port$=":${port}"] .port-hit`)).boundingBox();
-  const a = await box(fromBlock, fromPort);
-  const b = await box(toBlock, toPort);
-  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
-  await page.mouse.down();
-  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
-  await page.mouse.up();
+  await dragPort(page, ...ends);
 }
 
 async function gold() {
@@ -185,10 +178,10 @@ async function gold() {
   await page.click('.palette-entry[data-type="Gain"]');
   await page.waitForSelector('.block[data-id="gain_1"]');
   step = 'gold: connected by dragging';
-  await dragPort(page, 'compare_angle', 'y', 'gain_1', 'u');
+  await dragPortOnceDrawn(page, 'compare_angle', 'y', 'gain_1', 'u');
   await page.waitForFunction(() => window.duetStudio.editor.getText().includes('inputs: {u: error}, outputs: {y: gain_1_y}') || /gain_1\.u reads error/.test(document.getElementById('edit-message').textContent));
   await page.waitForSelector('.block[data-id="gain_1"] .port[data-port$=":y"]');
-  await dragPort(page, 'gain_1', 'y', 'pid', 'error');
+  await dragPortOnceDrawn(page, 'gain_1', 'y', 'pid', 'error');
   await page.waitForFunction(() => window.duetStudio.editor.getText().includes('inputs: {error: gain_1_y'));
   step = 'gold: its gain set in the form';
   await page.click('[data-bottom-tab="block"]');

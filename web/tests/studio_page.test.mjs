@@ -13,6 +13,7 @@ import { fileURLToPath } from 'node:url';
 import { build } from 'esbuild';
 import { parse } from 'yaml';
 import { chromium_path, launchChromium } from './browser.mjs';
+import { dragPort } from './studio_session.mjs';
 
 const web = path.join(path.dirname(fileURLToPath(import.meta.url)), '..');
 const no_chromium = !existsSync(chromium_path) && `no Chromium at ${chromium_path}`;
@@ -57,17 +58,6 @@ after(async () => {
 const onDisk = () => readFile(server.file, 'utf8');
 const message = () => page.textContent('#edit-message');
 const waitForChecked = () => page.waitForFunction(() => !window.duetStudio.connection || document.getElementById('check-state').dataset.state !== 'pending');
-
-async function dragPort(fromBlock, fromPort, toBlock, toPort) {
-  await page.evaluate(() => window.duetStudio.view.fit()); // both ends on screen
-  const box = async (block, port) => (await page.$(`.block[data-id="${block}"] .port[data-port$=":${port}"] .port-hit`)).boundingBox();
-  const a = await box(fromBlock, fromPort);
-  const b = await box(toBlock, toPort);
-  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
-  await page.mouse.down();
-  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
-  await page.mouse.up();
-}
 
 test('the text round-trips byte for byte: a CRLF file saved unedited is the same file', { skip: no_chromium }, async () => {
   const before = await onDisk();
@@ -120,10 +110,10 @@ test('gold scenario: a Gain between two connected blocks, its k set, saved; the 
   const before = await onDisk();
   await page.click('.palette-entry[data-type="Gain"]');
   await page.waitForSelector('.block[data-id="gain_1"]');
-  await dragPort('compare_angle', 'y', 'gain_1', 'u');
+  await dragPort(page, 'compare_angle', 'y', 'gain_1', 'u');
   await page.waitForFunction(() => /gain_1\.u reads error/.test(document.getElementById('edit-message').textContent));
   await page.waitForSelector('.block[data-id="gain_1"] .port[data-port$=":y"]');
-  await dragPort('gain_1', 'y', 'pid', 'error');
+  await dragPort(page, 'gain_1', 'y', 'pid', 'error');
   await page.waitForFunction(() => /pid\.error reads gain_1_y/.test(document.getElementById('edit-message').textContent));
   await page.click('[data-bottom-tab="block"]');
   await page.click('.block[data-id="gain_1"]');

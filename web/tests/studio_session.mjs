@@ -99,3 +99,15 @@ export function measureLiveRefresh(page, seconds) {
     }, duration * 1000);
   }), seconds);
 }
+
+// Drags from one block's port to another's, with the whole system fitted so that both are on screen.
+export async function dragPort(page, fromBlock, fromPort, toBlock, toPort) {
+  await page.evaluate(() => window.duetStudio.view.fit());
+  const box = async (block, port) => (await page.$(`.block[data-id="${block}"] .port[data-port$=":${port}"] .port-hit`)).boundingBox();
+  const a = await box(fromBlock, fromPort);
+  const b = await box(toBlock, toPort);
+  await page.mouse.move(a.x + a.width / 2, a.y + a.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
+  await page.mouse.up();
+}

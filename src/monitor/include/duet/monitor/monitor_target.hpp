@@ -22,8 +22,8 @@ namespace duet::monitor {
 struct MonitorOptions {
   xcp::host::Endpoint target;
   xcp::host::A2lDescription a2l;
-  std::vector<std::string> signals;  // MEASUREMENT names (arrays as a whole); empty: every measurement
-  std::string event;                 // name or number; empty: the fastest periodic event
+  std::vector<std::string> signals;           // MEASUREMENT names (arrays as a whole); empty: every measurement
+  std::string event;                          // name or number; empty: the fastest periodic event
   dashboard::ServerOptions server;            // its own dashboard's, when `dashboard` is none
   dashboard::Dashboard* dashboard = nullptr;  // the owner's, which must outlive the monitor
   int timeout_ms = 1000;
