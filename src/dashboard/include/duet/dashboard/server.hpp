@@ -27,8 +27,8 @@ struct ServerOptions {
   std::uint16_t port = 0;          // 0: any free port
   std::filesystem::path web_root;  // the built front end (web/dist); empty: WebSocket only
   std::string log_name = "dashboard";
-  std::string index = "index.html";          // the page "/" is
-  std::size_t max_request_size = 4096;       // bytes of one WebSocket request
+  std::string index = "index.html";     // the page "/" is
+  std::size_t max_request_size = 4096;  // bytes of one WebSocket request
 };
 
 enum class Delivery { droppable, always };
