@@ -7,7 +7,8 @@
 //   gold      apps/pid_demo/pid_demo.yaml: a Gain put between two connected blocks from the palette, connected by
 //             dragging, its k set in the form, saved; `duet model check` and `duet sim` accept the file.
 //   roundtrip every example model opened and saved without edits: byte-identical files.
-//   simulate  pid_demo simulated from the page: the plot drawn, a clicked wire added to it.
+//   simulate  pid_demo simulated from the page: the plot drawn, a clicked wire added to it; then generated: the
+//             files listed, the verdict not analysed until the tasks' execution times are given, then schedulable.
 //   external  (with --firmware) the robot's firmware on QEMU in lock-step (duet pil) and `duet studio --xcp`:
 //             theta's value changes on its wire, P written on its block and read back, the refresh rate of the
 //             live values with the whole top level visible, a wire scoped.
@@ -264,6 +265,20 @@ async function simulate() {
   await waitFor(`${wire.resolved} in the plot's legend`, 5000, async () => (await legend()).includes(wire.resolved));
   await page.screenshot({ path: path.join(options.artefacts, 'studio-simulation.png') });
   results.simulate = { rows: message.time_s.length, columns: message.names.length };
+
+  step = 'generate: the files and the task table';
+  await page.click('[data-bottom-tab="generated"]');
+  const verdict = () => page.textContent('#generated .verdict');
+  await page.click('#generated button:has-text("Generate")');
+  await page.waitForSelector('#generated .file-list .file-name:has-text("pid_demo.a2l")', { timeout: 20000 });
+  if ((await verdict()) !== 'not analysed') throw new Error(`the verdict without execution times is ${await verdict()}`);
+  step = 'generate: the verdict once the execution times are given';
+  await page.fill('#generated input[data-task="step_rate_1"][data-time="wcet_us"]', '20');
+  await page.fill('#generated input[data-task="step_rate_10"][data-time="wcet_us"]', '50');
+  await page.click('#generated button:has-text("Generate")');
+  await waitFor('the verdict schedulable', 20000, async () => (await verdict()) === 'schedulable');
+  await page.screenshot({ path: path.join(options.artefacts, 'studio-generated.png') });
+  results.generate = { files: await page.$$eval('#generated .file-list .file-name', (names) => names.map((name) => name.textContent)), verdict: await verdict() };
   if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
   await session.close();
 }

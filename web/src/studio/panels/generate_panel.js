@@ -7,6 +7,9 @@ export function createGeneratePanel({ element: root, hub, connection, getText })
   let files = [];
   let shownFile = null; // its name, kept across generations while it still exists
   let waiting = false;
+  // The times the verdict needs and no model holds, by task function (step_rate_1, task_EXTI8), kept across
+  // generations: worst-case execution times, and interrupt tasks' shortest times between triggers.
+  const times = { wcet_us: new Map(), interarrival_us: new Map() };
 
   root.classList.add('studio-panel', 'generate-panel');
   const generateButton = element('button', { type: 'button', class: 'primary', onclick: generate }, 'Generate');
@@ -33,8 +36,13 @@ export function createGeneratePanel({ element: root, hub, connection, getText })
     message.className = `panel-message ${tone}`;
   }
 
+  function given(map) {
+    return Object.fromEntries([...map].filter(([, value]) => Number.isFinite(value) && value > 0));
+  }
+
   function generate() {
-    if (!connection.send({ type: 'generate', text: getText() })) return say('not connected to duet studio', 'bad');
+    const request = { type: 'generate', text: getText(), wcet_us: given(times.wcet_us), interarrival_us: given(times.interarrival_us) };
+    if (!connection.send(request)) return say('not connected to duet studio', 'bad');
     waiting = true;
     generateButton.disabled = true;
     say('generating…');
@@ -97,17 +105,37 @@ export function createGeneratePanel({ element: root, hub, connection, getText })
     fileText.scrollTop = 0;
   }
 
+  // A time the user gives for the verdict; the next Generate sends it.
+  function timeField(kind, task) {
+    const input = element('input', {
+      type: 'number', min: '0', step: 'any', inputmode: 'decimal', 'data-time': kind, 'data-task': task.function,
+      value: times[kind].has(task.function) ? String(times[kind].get(task.function)) : '',
+      title: kind === 'wcet_us' ? 'worst-case execution time, µs' : 'shortest time between two triggers, µs',
+    });
+    input.addEventListener('input', () => {
+      const value = Number(input.value);
+      if (input.value === '' || !(value > 0)) times[kind].delete(task.function);
+      else times[kind].set(task.function, value);
+    });
+    return input;
+  }
+
   function showTasks(tasks) {
     const rows = taskRows(tasks);
     if (rows.length === 0) return replaceChildren(taskTable, element('p', { class: 'muted' }, 'no tasks'));
+    const headings = ['task', 'kind', 'period or interrupt', 'blocks', 'WCET [µs]', 'min. interarrival [µs]'];
     replaceChildren(
       taskTable,
       element(
         'table',
         {},
-        element('thead', {}, element('tr', {}, ['task', 'kind', 'period or interrupt', 'blocks'].map((heading) => element('th', {}, heading)))),
-        element('tbody', {}, rows.map((cells) => element('tr', {}, cells.map((cell) => element('td', {}, cell))))),
+        element('thead', {}, element('tr', {}, headings.map((heading) => element('th', {}, heading)))),
+        element('tbody', {}, rows.map((cells, index) => element('tr', {},
+          cells.map((cell) => element('td', {}, cell)),
+          element('td', {}, timeField('wcet_us', tasks[index])),
+          element('td', {}, tasks[index].kind === 'interrupt' ? timeField('interarrival_us', tasks[index]) : null)))),
       ),
+      element('p', { class: 'muted' }, 'The verdict needs every task\'s execution time and every interrupt task\'s shortest time between triggers: give them here and Generate again. Connected to a target (Live), its measured longest execution times stand in.'),
     );
   }
 
@@ -118,7 +146,8 @@ export function createGeneratePanel({ element: root, hub, connection, getText })
       return;
     }
     verdict.textContent = schedulability.verdict ?? (schedulability.schedulable ? 'schedulable' : 'not schedulable');
-    verdict.className = `verdict ${schedulability.schedulable ? 'good' : 'bad'}`;
+    const tone = schedulability.schedulable === null || schedulability.schedulable === undefined ? 'warn' : schedulability.schedulable ? 'good' : 'bad';
+    verdict.className = `verdict ${tone}`;
     report.textContent = schedulability.report ?? '';
   }
 
