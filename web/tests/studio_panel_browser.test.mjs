@@ -204,12 +204,12 @@ test('simulation: Run sends the request, progress shows, the result is plotted, 
 
 test('generated: the files, a file text, the tasks, the verdict', { skip: no_chromium }, async () => {
   await page.click('#generate button.primary');
-  assert.deepEqual(await page.evaluate(() => window.harness.sent.at(-1)), { type: 'generate', text: 'name: demo\n' });
+  assert.deepEqual(await page.evaluate(() => window.harness.sent.at(-1)), { type: 'generate', text: 'name: demo\n', wcet_us: {}, interarrival_us: {} });
   await page.evaluate(() =>
     window.harness.hub.emit('generated', {
       type: 'generated',
       files: [{ name: 'm.hpp', text: '#pragma once\n' }, { name: 'm.cpp', text: '#include "m.hpp"\n' }],
-      tasks: [{ index: 0, name: 'base', kind: 'periodic', period_us: 1000, blocks: 4 }, { index: 1, name: 'isr', kind: 'interrupt', interrupt: 'EXTI0', priority: 2, blocks: 1 }],
+      tasks: [{ index: 0, name: 'base', function: 'step_rate_1', kind: 'periodic', period_us: 1000, blocks: 4 }, { index: 1, name: 'isr', function: 'task_EXTI0', kind: 'interrupt', interrupt: 'EXTI0', priority: 2, blocks: 1 }],
       schedulability: { verdict: 'not schedulable', schedulable: false, report: 'base overruns' },
     }),
   );
@@ -223,7 +223,15 @@ test('generated: the files, a file text, the tasks, the verdict', { skip: no_chr
   }));
   assert.deepEqual(shown.files, ['m.hpp', 'm.cpp']);
   assert.equal(shown.text, '#include "m.hpp"\n');
-  assert.deepEqual(shown.rows, [['base', 'periodic', '1 ms', '4'], ['isr', 'interrupt', 'EXTI0, priority 2', '1']]);
+  assert.deepEqual(shown.rows, [['base', 'periodic', '1 ms', '4', '', ''], ['isr', 'interrupt', 'EXTI0, priority 2', '1', '', '']]);
   assert.equal(shown.verdict, 'verdict bad');
   assert.equal(shown.report, 'base overruns');
+  // The times the verdict needs, given in the table, go with the next request; a cleared or bad one does not.
+  await page.fill('#generate input[data-task="step_rate_1"][data-time="wcet_us"]', '20');
+  await page.fill('#generate input[data-task="task_EXTI0"][data-time="wcet_us"]', '5');
+  await page.fill('#generate input[data-task="task_EXTI0"][data-time="interarrival_us"]', '1000');
+  await page.fill('#generate input[data-task="task_EXTI0"][data-time="wcet_us"]', '');
+  assert.equal(await page.$('#generate input[data-task="step_rate_1"][data-time="interarrival_us"]'), null, 'a periodic task has no interarrival time');
+  await page.click('#generate button.primary');
+  assert.deepEqual(await page.evaluate(() => window.harness.sent.at(-1)), { type: 'generate', text: 'name: demo\n', wcet_us: { step_rate_1: 20 }, interarrival_us: { task_EXTI0: 1000 } });
 });
