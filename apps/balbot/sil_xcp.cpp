@@ -38,7 +38,7 @@ struct SilXcp::Slave {
   std::array<xcp::DaqList, 8> daq_lists{};
   std::array<xcp::Odt, 64> odts{};
   std::array<xcp::OdtEntry, 512> odt_entries{};
-  std::vector<std::uint8_t> queue_storage = std::vector<std::uint8_t>(64 * 1024);
+  std::vector<std::uint8_t> queue_storage = std::vector<std::uint8_t>(std::size_t{64} * 1024);
   std::array<std::uint8_t, 256> download_buffer{};
   xcp::TransmitQueue queue{queue_storage, {lock_queue, unlock_queue}};
   xcp::SlaveConfiguration configuration{.memory = xcp::MemoryMap{regions},

@@ -19,20 +19,20 @@ constexpr std::string_view anti_windups[] = {"none", "clamping"};
 constexpr std::string_view transitions[] = {"deterministic", "latest"};
 
 constexpr ParameterDocumentation number(std::string_view name, std::string_view description) {
-  return {name, Kind::number, description};
+  return {.name = name, .description = description};
 }
 constexpr ParameterDocumentation at_least(std::string_view name, double minimum, std::string_view description) {
-  return {name, Kind::number, description, {}, minimum};
+  return {.name = name, .description = description, .minimum = minimum};
 }
 constexpr ParameterDocumentation count(std::string_view name, double minimum, std::string_view description) {
-  return {name, Kind::number, description, {}, minimum, {}, true};
+  return {.name = name, .description = description, .minimum = minimum, .integer = true};
 }
 constexpr ParameterDocumentation word(std::string_view name, std::string_view description,
                                       std::span<const std::string_view> choices = {}) {
-  return {name, Kind::word, description, choices};
+  return {.name = name, .description = description, .choices = choices, .kind = Kind::word};
 }
 constexpr ParameterDocumentation type(std::string_view description) {
-  return {"type", Kind::data_type, description, data_types};
+  return {.name = "type", .description = description, .choices = data_types, .kind = Kind::data_type};
 }
 
 constexpr ParameterDocumentation constant[] = {
@@ -186,8 +186,8 @@ constexpr BlockDocumentation table[] = {
 }  // namespace
 
 const BlockDocumentation* find_block_documentation(std::string_view type) {
-  const auto found = std::find_if(std::begin(table), std::end(table),
-                                  [type](const BlockDocumentation& entry) { return entry.type == type; });
+  const auto* const found = std::find_if(std::begin(table), std::end(table),
+                                         [type](const BlockDocumentation& entry) { return entry.type == type; });
   return found == std::end(table) ? nullptr : found;
 }
 

@@ -200,7 +200,7 @@ class DiagramBuilder {
   }
 
   // A block runs in one task; a subsystem in the task its blocks share (none when they differ or are unknown).
-  json task_of(const Block& block, const std::string& id) const {
+  [[nodiscard]] json task_of(const Block& block, const std::string& id) const {
     if (block.type != "Subsystem") {
       const auto found = tasks_.find(id);
       return found == tasks_.end() ? json() : found->second;
@@ -208,10 +208,10 @@ class DiagramBuilder {
     std::optional<json> shared;
     for (const Block& inner : block.blocks) {
       json task = task_of(inner, id + "/" + inner.name);
-      if (task.is_null() || (shared && *shared != task)) return json();
+      if (task.is_null() || (shared && *shared != task)) return {};
       shared = std::move(task);
     }
-    return shared ? *shared : json();
+    return shared ? *shared : json{};
   }
 
   static json period_json(const model::Period& period) {
@@ -290,13 +290,13 @@ class DiagramBuilder {
     return names;
   }
 
-  json arguments(const Block& block) const {
+  [[nodiscard]] json arguments(const Block& block) const {
     json result = json::array();
     for (const auto& [name, parameter] : block.parameters) {
+      const std::string& reference = parameter.reference;  // C++20 lambdas cannot capture a structured binding
       const bool tunable =
-          !parameter.reference.empty() &&
-          std::any_of(model_.parameters.begin(), model_.parameters.end(),
-                      [&](const model::Parameter& model) { return model.name == parameter.reference; });
+          !reference.empty() && std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                                            [&](const model::Parameter& model) { return model.name == reference; });
       json entry = {{"name", name},
                     {"text", parameter.text},
                     {"reference", parameter.reference.empty() ? json() : json(parameter.reference)},
@@ -351,7 +351,7 @@ class DiagramBuilder {
     std::map<std::string, std::size_t> index_;
   };
 
-  json wire_json(const Wires::Wire& wire, const std::string& scope, const std::string& path) const {
+  [[nodiscard]] json wire_json(const Wires::Wire& wire, const std::string& scope, const std::string& path) const {
     const std::string resolved = names_.model_wide(scope, wire.signal);
     Location location = wire.driver_location.value_or(wire.first_location);
     json entry = {

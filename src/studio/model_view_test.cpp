@@ -12,7 +12,7 @@ namespace {
 
 using nlohmann::json;
 
-json view_of(const std::string& text, const std::string& file = "m.yaml") {
+json view_of(std::string_view text, const std::string& file = "m.yaml") {
   return model_view(check_text(text, file), text);
 }
 
@@ -24,7 +24,7 @@ const json* find_by(const json& list, const char* key, const std::string& value)
 }
 
 // A small model: a counter, a fan-out, and an edge-triggered subsystem with an input and an output port.
-const std::string small = R"(duet_model: 1
+constexpr std::string_view small = R"(duet_model: 1
 name: small
 base_period_us: 1000
 parameters:
@@ -130,7 +130,7 @@ TEST(ModelView, ListsTheTasksAndColoursEachBlockByItsTask) {
 }
 
 TEST(ModelView, TiesEachDiagnosticToTheBlockItIsIn) {
-  std::string broken = small;
+  std::string broken{small};
   broken.replace(broken.find("inputs: {u: x}\n    outputs: {y: doubled}"), 14, "inputs: {u: xx}");
   const json view = view_of(broken);
   EXPECT_FALSE(view["ok"]);

@@ -174,7 +174,7 @@ class Studio::Impl {
   bool save(dashboard::Client& client, const json& request) {
     const auto text = string_member(request, "text");
     const auto base = string_member(request, "base");
-    if (!text || !base) return reply_error(client, "save", "save needs \"text\" and \"base\" (the version edited)");
+    if (!text || !base) return reply_error(client, "save", R"(save needs "text" and "base" (the version edited))");
     auto on_disk = read_text_file(options_.model.string());
     const std::string disk_version = on_disk ? version_of(on_disk.value()) : std::string{};
     if (!on_disk || disk_version != *base) {
@@ -233,7 +233,7 @@ class Studio::Impl {
 
   // The YAML files beside the model and in its subfolders (a plant model, the robot's scenarios), by their paths
   // from the model's folder.
-  json files_beside() const {
+  [[nodiscard]] json files_beside() const {
     std::vector<std::string> names;
     std::error_code error;
     for (fs::recursive_directory_iterator entry{folder_, error}, end; !error && entry != end; entry.increment(error)) {
@@ -371,7 +371,7 @@ class Studio::Impl {
     return status["link"]["state"].get<std::string>();
   }
 
-  json external_message() const {
+  [[nodiscard]] json external_message() const {
     json message = {{"type", "external"}, {"state", external_state()}, {"address", external_address_}};
     if (monitor_) {
       const json status = monitor_->status();
@@ -389,7 +389,7 @@ class Studio::Impl {
     dashboard_->broadcast(external_message(), dashboard::Delivery::always);
   }
 
-  json status() const {
+  [[nodiscard]] json status() const {
     json status = monitor_ ? monitor_->status() : json::object();
     status["external"] = {{"state", external_state()}, {"address", external_address_}};
     return status;

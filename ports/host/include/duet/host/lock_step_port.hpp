@@ -42,7 +42,7 @@ class LockStepPort {
   void skip_base_tick() {}
   void trigger_rate(std::size_t rate) { interrupts_.pend(rate); }
   void idle() { advance(); }  // so that Executive::run() runs the model as fast as the PC can
-  void task_finished(std::size_t task) {
+  void task_finished(std::size_t task) const {
     if (on_task_finished) on_task_finished(task);
   }
 

@@ -3,6 +3,7 @@
 // summary and a category, per parameter what it means and what it takes. block_types.hpp says what the checker
 // needs; this says what an editor needs, so that a form can refuse a wrong value before the checker sees it.
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string_view>
@@ -11,11 +12,11 @@ namespace duet::model {
 
 struct ParameterDocumentation {
   std::string_view name;
-  enum class Kind { number, word, data_type } kind = Kind::number;
   std::string_view description;
   std::span<const std::string_view> choices = {};  // a word's values, when it has a fixed set
   std::optional<double> minimum = {};
   std::optional<double> maximum = {};
+  enum class Kind : std::uint8_t { number, word, data_type } kind = Kind::number;
   bool integer = false;
 };
 

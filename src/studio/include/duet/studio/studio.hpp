@@ -34,7 +34,7 @@ class Studio {
   // Reads the model file; fails naming it when it cannot be read. A model that does not check is fine: the page
   // shows its errors.
   static Result<std::unique_ptr<Studio>> create(boost::asio::io_context& io, StudioOptions options);
-  ~Studio();
+  ~Studio();  // NOLINT(bugprone-exception-escape): joining threads throws only on a bug; ending then is right
   Studio(const Studio&) = delete;
   Studio& operator=(const Studio&) = delete;
 
