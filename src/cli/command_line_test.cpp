@@ -69,5 +69,22 @@ TEST(CommandLine, MonitorNeedsAnA2lFile) {
   EXPECT_NE(outcome.err.find("--a2l"), std::string::npos) << outcome.err;
 }
 
+// duet studio refuses what it cannot serve before it serves anything.
+TEST(CommandLine, StudioNamesWhatIsWrongWithItsCommandLine) {
+  const std::string model = std::string{DUET_SOURCE_DIR} + "/apps/pid_demo/pid_demo.yaml";
+  Outcome outcome = run({"studio"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_NE(outcome.err.find("model"), std::string::npos) << outcome.err;
+  outcome = run({"studio", "/nonexistent.yaml"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_NE(outcome.err.find("/nonexistent.yaml"), std::string::npos) << outcome.err;
+  outcome = run({"studio", model, "--xcp", "serial://x"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_NE(outcome.err.find("--xcp"), std::string::npos) << outcome.err;
+  outcome = run({"studio", model, "--listen", "0.0.0.0:0"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_NE(outcome.err.find("--expose"), std::string::npos) << outcome.err;
+}
+
 }  // namespace
 }  // namespace duet::cli

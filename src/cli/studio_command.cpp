@@ -9,6 +9,7 @@
 #include "duet/dashboard/static_files.hpp"
 #include "duet/link/tcp.hpp"
 #include "duet/studio/studio.hpp"
+#include "duet/xcp/host/endpoint.hpp"
 #include "host_port_validator.hpp"
 #include "page_server.hpp"
 
@@ -79,8 +80,14 @@ Action define_studio_command(CLI::App& command) {
   command.add_option("--duration", options->duration_s, "The page's simulation duration in seconds")
       ->capture_default_str()
       ->check(CLI::Range(0.001, 3600.0));
-  command.add_option("--xcp", options->xcp,
-                     "A running target's XCP (tcp://host:port or udp://host:port): external mode");
+  command
+      .add_option("--xcp", options->xcp, "A running target's XCP (tcp://host:port or udp://host:port): external mode")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            auto parsed = xcp::host::parse_endpoint(text);
+            return parsed ? std::string{} : parsed.error();
+          },
+          "URI"));
   command.add_option("--listen", options->listen, "Address:port of the page (HTTP and WebSocket)")
       ->capture_default_str()
       ->check(host_port_validator());
