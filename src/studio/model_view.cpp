@@ -199,19 +199,26 @@ class DiagramBuilder {
     return entry;
   }
 
-  // A block runs in one task; a subsystem in the task its blocks share (none when they differ or are unknown).
+  // A block runs in one task; a subsystem in the task its blocks share, its constants (computed once) aside; none
+  // when they differ or are unknown.
   [[nodiscard]] json task_of(const Block& block, const std::string& id) const {
     if (block.type != "Subsystem") {
       const auto found = tasks_.find(id);
       return found == tasks_.end() ? json() : found->second;
     }
     std::optional<json> shared;
+    bool constants = false;
     for (const Block& inner : block.blocks) {
       json task = task_of(inner, id + "/" + inner.name);
+      if (task == "constant") {
+        constants = true;
+        continue;
+      }
       if (task.is_null() || (shared && *shared != task)) return {};
       shared = std::move(task);
     }
-    return shared ? *shared : json{};
+    if (shared) return *shared;
+    return constants ? json("constant") : json{};
   }
 
   static json period_json(const model::Period& period) {

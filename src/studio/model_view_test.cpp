@@ -173,6 +173,11 @@ TEST(ModelView, DrawsTheRobotWithEveryBlockInEverySubsystem) {
     if (block.contains("trigger") && block["trigger"]["kind"] == "interrupt") interrupt_found = true;
   }
   EXPECT_TRUE(interrupt_found);
+  // A subsystem of a constant and the block it feeds runs in that block's task: the constant is computed once.
+  const json* device_reset = find_by(view["diagram"]["root"]["blocks"], "id", "device_reset");
+  ASSERT_NE(device_reset, nullptr);
+  EXPECT_EQ((*device_reset)["system"]["blocks"][0]["task"], "constant");
+  EXPECT_TRUE((*device_reset)["task"].is_number());
   const json* theta = find_by(view["diagram"]["root"]["wires"], "signal", "theta");
   ASSERT_NE(theta, nullptr);
   EXPECT_EQ((*theta)["measurement"], "theta");

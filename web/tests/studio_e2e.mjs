@@ -102,6 +102,13 @@ async function robot() {
   }
   results.robot.drawn = counts;
 
+  step = 'robot: the legend folds away and back';
+  const legendRows = () => page.$$eval('.diagram-legend .legend-swatch', (swatches) => swatches.filter((swatch) => swatch.getClientRects().length > 0).length);
+  if ((await legendRows()) !== expected.tasks.length + 1) throw new Error(`the legend shows ${await legendRows()} rows for ${expected.tasks.length} tasks and the constants`);
+  await page.click('.diagram-legend .legend-toggle');
+  if ((await legendRows()) !== 0) throw new Error('the folded legend still shows its rows');
+  await page.click('.diagram-legend .legend-toggle');
+
   step = 'robot: a subsystem opened and left';
   await page.evaluate(() => window.duetStudio.view.fit());
   await page.dblclick('g.block[data-id="hall_left"]');
