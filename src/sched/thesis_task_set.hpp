@@ -1,5 +1,5 @@
 #pragma once
-// For tests: the thesis' task sets (shared/facts/scheduling.md; thesis tables 2.1, 4.6, 4.9).
+// For tests: the thesis' task sets (thesis tables 2.1, 4.6 and 4.9: each task's period, execution time and deadline).
 
 #include <string>
 

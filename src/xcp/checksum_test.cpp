@@ -8,7 +8,8 @@
 namespace duet::xcp {
 namespace {
 
-// The test vector of shared/facts/xcp.md: 01 02 .. 10, then F1 F2 .. FF, then 00 (32 bytes).
+// A 32-byte test vector whose checksums the XCP standard's checksum table gives: 01 02 .. 10, then F1 F2 .. FF, then
+// 00.
 std::vector<std::uint8_t> test_vector() {
   std::vector<std::uint8_t> bytes;
   for (int value = 0x01; value <= 0x10; ++value) bytes.push_back(static_cast<std::uint8_t>(value));

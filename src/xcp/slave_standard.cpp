@@ -13,7 +13,7 @@ constexpr std::uint8_t driver_version = 0x10;  // 1.0, in nibbles
 constexpr std::uint8_t protectable =
     resource::calibration_paging | resource::daq | resource::stim | resource::programming;
 
-// GET_ID types (shared/facts/xcp.md).
+// GET_ID's identification types (XCP protocol layer, GET_ID: 0 ASCII text, 1 the A2L file's name, ...).
 constexpr std::uint8_t id_ascii_text = 0;
 constexpr std::uint8_t id_a2l_name = 1;
 constexpr std::uint8_t id_a2l_file = 4;

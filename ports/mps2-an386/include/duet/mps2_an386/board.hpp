@@ -1,6 +1,6 @@
 #pragma once
 // QEMU's mps2-an386: an Arm MPS2 FPGA board image with a Cortex-M4F (Application Note 386), as QEMU 7.2 models it.
-// Numbers from shared/facts/qemu-mps2-an386.md.
+// Numbers from Application Note 386 and QEMU's model of it.
 
 #include <cstdint>
 #include <string_view>

@@ -1,5 +1,5 @@
 #pragma once
-// The STM32MP15's Cortex-M4 (numbers from shared/facts/stm32mp15.md and RM0436): its clocks, and its device
+// The STM32MP15's Cortex-M4 (numbers from ST's CMSIS device header and RM0436): its clocks, and its device
 // interrupts by name and number (the M4's exception number is 16 + these).
 
 #include <array>
@@ -80,7 +80,7 @@ consteval unsigned interrupt_by_name(std::string_view name) {
   return detail::no_such_interrupt_on_stm32mp15();
 }
 
-// The table against shared/facts/stm32mp15.md's numbers, which come from another source (RM0436's text).
+// The table against the numbers of RM0436's text, a source apart from the header the table follows.
 static_assert(
     []() consteval {
       constexpr struct {

@@ -1,6 +1,6 @@
 #pragma once
 // XCP (ASAM MCD-1 XCP 1.x) on the wire: packet identifiers, command codes, error and event codes, resource bits.
-// Numbers from shared/facts/xcp.md; shared by the slave and the master.
+// Numbers from the XCP standard's protocol layer; shared by the slave and the master.
 
 #include <cstdint>
 
