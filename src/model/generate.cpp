@@ -395,10 +395,7 @@ class FileWriter {
         {"max_cycles", "longest net execution time"},
     }};
     for (std::size_t task = 0; task < program_.tasks.size(); ++task) {
-      std::string identifier = program_.tasks[task].name;
-      for (char& character : identifier) {
-        if (std::isalnum(static_cast<unsigned char>(character)) == 0) character = '_';
-      }
+      const std::string identifier = account_task_name(program_.tasks[task]);
       for (std::size_t field = 0; field < fields.size(); ++field) {
         description.measurements.push_back(word("executive." + identifier + "." + fields[field].first,
                                                 static_cast<std::uint32_t>(16 + 20 * task + 4 * field),
@@ -465,6 +462,14 @@ class FileWriter {
 Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,
                                             const std::string& model_folder) {
   return FileWriter{program, source, model_folder}.files();
+}
+
+std::string account_task_name(const ProgramTask& task) {
+  std::string name = task.name;
+  for (char& character : name) {
+    if (std::isalnum(static_cast<unsigned char>(character)) == 0) character = '_';
+  }
+  return name;
 }
 
 bool is_executive_account(const xcp::host::A2lDescription& a2l, const xcp::host::Variable& measurement) {

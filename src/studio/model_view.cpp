@@ -95,14 +95,25 @@ std::string value_text(const model::Value& value) {
 
 json location_json(Location location) { return {{"line", location.line}, {"column", location.column}}; }
 
-// The port number of u1, u2, ...: variadic inputs are drawn in that order.
-int port_number(const std::string& port) {
-  int number = 0;
-  if (port.size() < 2 || port[0] != 'u' ||
-      std::from_chars(port.data() + 1, port.data() + port.size(), number).ec != std::errc{}) {
-    return 0;
+// The highest N among the connections to ports named LETTER + N (u1, u2, ... or y1, y2, ...); 0 for none.
+int highest_numbered(const std::vector<Connection>& connections, char letter) {
+  int highest = 0;
+  for (const Connection& connection : connections) {
+    const std::string& port = connection.port;
+    int number = 0;
+    if (port.size() >= 2 && port[0] == letter &&
+        std::from_chars(port.data() + 1, port.data() + port.size(), number).ec == std::errc{}) {
+      highest = std::max(highest, number);
+    }
   }
-  return number;
+  return highest;
+}
+
+// LETTER1 .. LETTERcount.
+std::vector<std::string> numbered(char letter, int count) {
+  std::vector<std::string> names;
+  for (int number = 1; number <= count; ++number) names.push_back(letter + std::to_string(number));
+  return names;
 }
 
 class DiagramBuilder {
@@ -232,17 +243,18 @@ class DiagramBuilder {
   }
 
   // The ports the diagram draws: the type's own in its order (connected or not), a variadic block's connected ones
-  // (at least two), a subsystem's or Code block's as written; a connection to a port the type lacks is drawn too,
-  // so that the checker's error about it has something to sit on.
+  // (at least two), a Demux's up to the highest connected one and one more to connect (of its eight), a subsystem's
+  // or Code block's as written; a connection to a port the type lacks is drawn too, so that the checker's error about
+  // it has something to sit on.
   static json ports(const Block& block, bool inputs) {
     const std::vector<Connection>& connections = inputs ? block.inputs : block.outputs;
     std::vector<std::string> names;
     const model::BlockType* type = model::find_block_type(block.type);
     if (type != nullptr && !type->user_defined_ports) {
       if (inputs && type->variadic_inputs) {
-        int highest = 2;
-        for (const Connection& connection : connections) highest = std::max(highest, port_number(connection.port));
-        for (int number = 1; number <= highest; ++number) names.push_back("u" + std::to_string(number));
+        names = numbered('u', std::max(2, highest_numbered(connections, 'u')));
+      } else if (!inputs && block.type == "Demux") {
+        names = numbered('y', std::min(highest_numbered(connections, 'y') + 1, static_cast<int>(type->outputs.size())));
       } else {
         const auto& fixed = inputs ? type->inputs : type->outputs;
         for (std::string_view name : fixed) names.emplace_back(name);
@@ -254,7 +266,6 @@ class DiagramBuilder {
     for (const Connection& connection : connections) {
       if (std::find(names.begin(), names.end(), connection.port) == names.end()) names.push_back(connection.port);
     }
-    if (block.type == "Demux" && !inputs) names = demux_outputs(connections);
     json result = json::array();
     for (const std::string& name : names) {
       const auto connected = std::find_if(connections.begin(), connections.end(),
@@ -279,22 +290,6 @@ class DiagramBuilder {
       result.push_back(std::move(port));
     }
     return result;
-  }
-
-  // A Demux has eight outputs; drawn are those up to the highest connected one, and one more to connect.
-  static std::vector<std::string> demux_outputs(const std::vector<Connection>& connections) {
-    int highest = 0;
-    for (const Connection& connection : connections) {
-      int number = 0;
-      const std::string& port = connection.port;
-      if (port.size() >= 2 && port[0] == 'y' &&
-          std::from_chars(port.data() + 1, port.data() + port.size(), number).ec == std::errc{}) {
-        highest = std::max(highest, number);
-      }
-    }
-    std::vector<std::string> names;
-    for (int number = 1; number <= std::min(highest + 1, 8); ++number) names.push_back("y" + std::to_string(number));
-    return names;
   }
 
   [[nodiscard]] json arguments(const Block& block) const {

@@ -60,7 +60,6 @@ class Studio::Impl {
     if (!text) return Failure{text.error()};
     disk_version_ = version_of(text.value());
     disk_text_ = std::move(text).value();
-    remember_if_checks(disk_text_);
     return done();
   }
 
@@ -103,7 +102,7 @@ class Studio::Impl {
                                     {"file", options_.model.filename().string()},
                                     {"version", disk_version_},
                                     {"text", disk_text_},
-                                    {"library", library_json()},
+                                    {"library", library_},
                                     {"plants", std::move(plants)},
                                     {"files", files_beside()},
                                     {"defaults",
@@ -164,10 +163,6 @@ class Studio::Impl {
     message["seq"] = seq;
     client.send(dashboard::message(message), dashboard::Delivery::always);
     if (checked.program) last_good_text_ = text;
-  }
-
-  void remember_if_checks(const std::string& text) {
-    if (check_text(text, options_.model.string()).program) last_good_text_ = text;
   }
 
   // Only over the version the page edited: a file changed by someone else is never overwritten.
@@ -314,9 +309,7 @@ class Studio::Impl {
     const json status = monitor_->status();
     if (!status.contains("executive")) return;
     for (const model::ProgramTask& task : program.tasks) {
-      const std::string account_name = task.rate.kind == model::Rate::Kind::periodic
-                                           ? "rate_" + std::to_string(task.rate.multiple)
-                                           : task.rate.interrupt;
+      const std::string account_name = model::account_task_name(task);
       for (const json& measured : status["executive"]["tasks"]) {
         if (measured["name"] == account_name && measured["max_us"].get<double>() > 0)
           times.wcet_us.try_emplace(model::task_function_name(task), measured["max_us"].get<double>());
@@ -335,8 +328,10 @@ class Studio::Impl {
     };
     auto endpoint = xcp::host::parse_endpoint(address);
     if (!endpoint) return failed(endpoint.error());
-    if (last_good_text_.empty()) return failed("the model has errors: its A2L cannot be generated");
-    const CheckedText checked = check_text(last_good_text_, options_.model.string());
+    // Before any page checked a text (--xcp at start), the file's.
+    const CheckedText checked =
+        check_text(last_good_text_.empty() ? disk_text_ : last_good_text_, options_.model.string());
+    if (!checked.program) return failed("the model has errors: its A2L cannot be generated");
     auto files = model::generate(*checked.program, options_.model.filename().string());
     if (!files) return failed(files.error());
     const auto a2l_file = std::find_if(files.value().begin(), files.value().end(),
@@ -348,10 +343,10 @@ class Studio::Impl {
                                                         .dashboard = &*dashboard_,
                                                         .timeout_ms = options_.timeout_ms});
     if (!monitor) return failed(monitor.error());
+    if (Status started = monitor.value()->start(); !started) return failed(started.error());
     monitor_ = std::shared_ptr<monitor::MonitorTarget>{std::move(monitor).value()};
     external_address_ = address;
     external_problem_.clear();
-    if (Status started = monitor_->start(); !started) return failed(started.error());
     dashboard_->broadcast(external_message(), dashboard::Delivery::always);
   }
 
@@ -365,17 +360,13 @@ class Studio::Impl {
     dashboard_->broadcast(external_message(), dashboard::Delivery::always);
   }
 
-  [[nodiscard]] std::string external_state() const {
-    if (!monitor_) return "off";
-    const json status = monitor_->status();
-    return status["link"]["state"].get<std::string>();
-  }
-
+  // The monitor's link (its state, and the last attempt's problem), or "off" with the last connect's problem.
   [[nodiscard]] json external_message() const {
-    json message = {{"type", "external"}, {"state", external_state()}, {"address", external_address_}};
+    json message = {{"type", "external"}, {"state", "off"}, {"address", external_address_}};
     if (monitor_) {
-      const json status = monitor_->status();
-      if (status["link"].contains("problem")) message["problem"] = status["link"]["problem"];
+      const json link = monitor_->status()["link"];
+      message["state"] = link["state"];
+      if (link.contains("problem")) message["problem"] = link["problem"];
     } else if (!external_problem_.empty()) {
       message["problem"] = external_problem_;
     }
@@ -383,15 +374,15 @@ class Studio::Impl {
   }
 
   void report_external_state() {
-    const std::string state = external_state();
-    if (state == reported_state_) return;
-    reported_state_ = state;
-    dashboard_->broadcast(external_message(), dashboard::Delivery::always);
+    json message = external_message();
+    if (message["state"] == reported_state_) return;
+    reported_state_ = message["state"].get<std::string>();
+    dashboard_->broadcast(message, dashboard::Delivery::always);
   }
 
   [[nodiscard]] json status() const {
     json status = monitor_ ? monitor_->status() : json::object();
-    status["external"] = {{"state", external_state()}, {"address", external_address_}};
+    status["external"] = {{"state", monitor_ ? status["link"]["state"] : json("off")}, {"address", external_address_}};
     return status;
   }
 
@@ -405,10 +396,11 @@ class Studio::Impl {
   fs::path folder_;
   boost::asio::steady_timer file_timer_;
   std::optional<dashboard::Dashboard> dashboard_;
+  const json library_ = library_json();  // the same for every page that joins
   std::string disk_text_;
   std::string disk_version_;
   std::string announced_version_;  // the last foreign version the page was told of
-  std::string last_good_text_;     // the last text that checked, for external mode's A2L
+  std::string last_good_text_;     // the last text a page had checked that checked, for external mode's A2L
   std::unique_ptr<SimulationJob> simulation_;
   std::shared_ptr<monitor::MonitorTarget> monitor_;
   std::string external_address_;

@@ -34,6 +34,10 @@ inline constexpr std::uint32_t executive_xcp_address = 0x0003'0000;
 // The A2L's memory segment of the executive's account.
 inline constexpr std::string_view executive_segment = "executive";
 
+// A task's name in the executive's account (`executive.NAME.max_cycles` in the A2L; the dashboard's task table):
+// its name with every character but letters and digits as '_' ("rate 1" is rate_1, "EXTI8" stays).
+[[nodiscard]] std::string account_task_name(const ProgramTask& task);
+
 // Whether `measurement` is part of the executive's account: it lies in `a2l`'s segment "executive". Every other
 // MEASUREMENT (all the others of a generated A2L; all of another's) is the application's. By place, not by name: a
 // model's subsystem may be called "executive" too.
