@@ -462,21 +462,4 @@ json model_view(const CheckedText& checked, std::string_view text) {
   return view;
 }
 
-DiagramCounts count(const json& diagram) {
-  DiagramCounts counts;
-  auto visit = [&counts](const json& system, auto& self) -> void {
-    counts.wires += system["wires"].size();
-    for (const json& block : system["blocks"]) {
-      if (!block.contains("system")) {
-        ++counts.blocks;
-        continue;
-      }
-      ++counts.subsystems;
-      self(block["system"], self);
-    }
-  };
-  if (diagram.contains("root")) visit(diagram["root"], visit);
-  return counts;
-}
-
 }  // namespace duet::studio

@@ -16,6 +16,30 @@ json view_of(std::string_view text, const std::string& file = "m.yaml") {
   return model_view(check_text(text, file), text);
 }
 
+// What the diagram shows over every system: blocks (subsystems apart), subsystems, and wires.
+struct DiagramCounts {
+  std::size_t blocks = 0;
+  std::size_t subsystems = 0;
+  std::size_t wires = 0;
+};
+
+DiagramCounts count(const json& diagram) {
+  DiagramCounts counts;
+  auto visit = [&counts](const json& system, auto& self) -> void {
+    counts.wires += system["wires"].size();
+    for (const json& block : system["blocks"]) {
+      if (!block.contains("system")) {
+        ++counts.blocks;
+        continue;
+      }
+      ++counts.subsystems;
+      self(block["system"], self);
+    }
+  };
+  visit(diagram["root"], visit);
+  return counts;
+}
+
 const json* find_by(const json& list, const char* key, const std::string& value) {
   for (const json& entry : list) {
     if (entry[key] == value) return &entry;

@@ -34,13 +34,4 @@ struct CheckedText {
 // The executive's task table (docs/STUDIO.md, "tasks").
 [[nodiscard]] nlohmann::json tasks_json(const model::Program& program);
 
-// Counts of what the diagram shows, over every system: blocks (not counting subsystems), subsystems, and wires (one
-// per signal a system names). The browser tests hold the page's drawing to `duet model check --json`'s counts.
-struct DiagramCounts {
-  std::size_t blocks = 0;
-  std::size_t subsystems = 0;
-  std::size_t wires = 0;
-};
-[[nodiscard]] DiagramCounts count(const nlohmann::json& diagram);
-
 }  // namespace duet::studio
