@@ -29,6 +29,8 @@ for (const [entry, bundle] of pages) {
 }
 const copies = [
   ['src/index.html', 'index.html'],
+  ['src/theme.css', 'theme.css'],
+  ['src/charts.css', 'charts.css'],
   ['src/style.css', 'style.css'],
   ['node_modules/uplot/dist/uPlot.min.css', 'uPlot.min.css'],
   ['src/studio.html', 'studio.html'],

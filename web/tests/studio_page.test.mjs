@@ -34,7 +34,7 @@ before(async () => {
   if (no_chromium) return;
   folder = await mkdtemp(path.join(tmpdir(), 'studio-page-'));
   await build({ entryPoints: [path.join(web, 'src/studio/main.js')], outfile: path.join(folder, 'studio.js'), bundle: true, format: 'iife', logLevel: 'warning' });
-  for (const [from, to] of [['src/studio.html', 'studio.html'], ['src/studio/studio.css', 'studio.css'], ['src/studio/diagram/diagram.css', 'diagram.css'], ['src/studio/panels/panels.css', 'panels.css'], ['node_modules/uplot/dist/uPlot.min.css', 'uPlot.min.css']]) {
+  for (const [from, to] of [['src/studio.html', 'studio.html'], ['src/theme.css', 'theme.css'], ['src/charts.css', 'charts.css'], ['src/studio/studio.css', 'studio.css'], ['src/studio/diagram/diagram.css', 'diagram.css'], ['src/studio/panels/panels.css', 'panels.css'], ['node_modules/uplot/dist/uPlot.min.css', 'uPlot.min.css']]) {
     await copyFile(path.join(web, from), path.join(folder, to));
   }
   // pid_demo with CRLF line ends, the text the page must hand back byte for byte.

@@ -57,7 +57,7 @@ window.harness = { hub, sent, diagram, live, simulation, startDaq, stopDaq: () =
 `;
 
 const page_html = `<!doctype html><html><head><meta charset="utf-8">
-<link rel="stylesheet" href="uPlot.min.css"><link rel="stylesheet" href="panels.css">
+<link rel="stylesheet" href="uPlot.min.css"><link rel="stylesheet" href="theme.css"><link rel="stylesheet" href="charts.css"><link rel="stylesheet" href="panels.css">
 <style>.tab { width: 1000px; height: 340px; }</style><script src="harness.js" defer></script></head>
 <body><div class="tab" id="live"></div><div class="tab" id="simulation"></div><div class="tab" id="generate"></div></body></html>`;
 
@@ -72,6 +72,7 @@ before(async () => {
   await build({ stdin: { contents: harness, resolveDir: web, sourcefile: 'harness.js' }, outfile: path.join(folder, 'harness.js'), bundle: true, format: 'iife', logLevel: 'warning' });
   await writeFile(path.join(folder, 'index.html'), page_html);
   await copyFile(path.join(web, 'node_modules/uplot/dist/uPlot.min.css'), path.join(folder, 'uPlot.min.css'));
+  for (const sheet of ['theme.css', 'charts.css']) await copyFile(path.join(web, 'src', sheet), path.join(folder, sheet));
   await copyFile(path.join(web, 'src/studio/panels/panels.css'), path.join(folder, 'panels.css'));
   browser = await launchChromium();
   page = await browser.newPage({ viewport: { width: 1040, height: 1100 } });
