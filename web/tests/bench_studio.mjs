@@ -13,7 +13,7 @@ import { mkdtemp, rm } from 'node:fs/promises';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { launchChromium, parseOptions } from './browser.mjs';
-import { measureLiveRefresh, median, percentile, StudioSessions } from './studio_session.mjs';
+import { checkLatencies, measureLiveRefresh, median, percentile, StudioSessions } from './studio_session.mjs';
 
 const usage = 'usage: node bench_studio.mjs --duet DUET --root SOURCE_DIR --sil BALBOT_SIL [--runs N] [--edits N] [--seconds S]';
 const options = parseOptions(process.argv.slice(2), { duet: '', root: '', sil: '', runs: '5', edits: '40', seconds: '10' }, usage);
@@ -47,16 +47,7 @@ async function check() {
   const model = await sessions.copyModel('apps/balbot/balbot.yaml');
   const session = await sessions.open(model);
   const { page } = session;
-  const latencies = [];
-  for (let edit = 0; edit < Number(options.edits); edit += 1) {
-    const before = await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.length);
-    await page.evaluate((n) => {
-      const text = window.duetStudio.editor.getText();
-      window.duetStudio.editor.setText(text.replace(/\n$/, `\n# edit ${n}\n`));
-    }, edit);
-    await page.waitForFunction((count) => window.duetStudio.stats.checkLatencyMs.length > count, before, { timeout: 5000 });
-    latencies.push(await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.at(-1)));
-  }
+  const latencies = await checkLatencies(page, Number(options.edits));
   results.check = { edits: latencies.length, median_ms: median(latencies), p95_ms: percentile(latencies, 0.95) };
   await session.close();
 }

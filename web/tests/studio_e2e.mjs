@@ -24,7 +24,7 @@ import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { promisify } from 'node:util';
 import { chromium_path, launchChromium, parseOptions, waitFor } from './browser.mjs';
-import { dragPort, measureLiveRefresh, median, StudioSessions } from './studio_session.mjs';
+import { checkLatencies, dragPort, measureLiveRefresh, median, StudioSessions } from './studio_session.mjs';
 
 const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--sil PROGRAM] [--steps LIST]';
 const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', sil: '', steps: 'robot,gold,roundtrip,simulate,external,sil' }, usage);
@@ -154,16 +154,7 @@ async function robot() {
   if ((await text(page)) !== original) throw new Error('the text is not as before after the fix');
 
   step = 'robot: edit-to-checked latency';
-  const latencies = [];
-  for (let edit = 0; edit < 20; edit += 1) {
-    const before = await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.length);
-    await page.evaluate((n) => {
-      const all = window.duetStudio.editor.getText();
-      window.duetStudio.editor.setText(all.replace(/\n$/, `\n# edit ${n}\n`));
-    }, edit);
-    await page.waitForFunction((count) => window.duetStudio.stats.checkLatencyMs.length > count, before, { timeout: 5000 });
-    latencies.push(await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.at(-1)));
-  }
+  const latencies = await checkLatencies(page, 20);
   results.robot.edit_to_checked_ms = { median: median(latencies), max: Math.max(...latencies), edits: latencies.length };
   if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
   await session.close();

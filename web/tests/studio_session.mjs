@@ -111,3 +111,19 @@ export async function dragPort(page, fromBlock, fromPort, toBlock, toPort) {
   await page.mouse.move(b.x + b.width / 2, b.y + b.height / 2, { steps: 8 });
   await page.mouse.up();
 }
+
+// `edits` edits of the text (a comment line added at its end), each waited for: the latency from each to the diagram
+// and the text showing the server's check of it, in ms.
+export async function checkLatencies(page, edits) {
+  const latencies = [];
+  for (let edit = 0; edit < edits; edit += 1) {
+    const before = await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.length);
+    await page.evaluate((n) => {
+      const text = window.duetStudio.editor.getText();
+      window.duetStudio.editor.setText(text.replace(/\n$/, `\n# edit ${n}\n`));
+    }, edit);
+    await page.waitForFunction((count) => window.duetStudio.stats.checkLatencyMs.length > count, before, { timeout: 5000 });
+    latencies.push(await page.evaluate(() => window.duetStudio.stats.checkLatencyMs.at(-1)));
+  }
+  return latencies;
+}
