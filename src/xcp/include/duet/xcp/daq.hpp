@@ -10,6 +10,19 @@
 
 namespace duet::xcp {
 
+// How a DAQ packet says which ODT of which DAQ list it carries (GET_DAQ_PROCESSOR_INFO's DAQ_KEY_BYTE bits 6-7, the
+// A2L's IDENTIFICATION_FIELD_TYPE_*): the absolute ODT number in one byte, or the ODT number relative to its list
+// followed by the list number as a byte, a word, or a word after a fill byte (aligned).
+enum class IdentificationField : std::uint8_t {
+  absolute = 0,
+  relative_byte = 1,
+  relative_word = 2,
+  relative_word_aligned = 3
+};
+
+// Bytes the identification field takes at the start of every DAQ packet.
+constexpr std::size_t identification_size(IdentificationField field) { return static_cast<std::size_t>(field) + 1; }
+
 // An event channel, as GET_DAQ_EVENT_INFO and the A2L describe it.
 struct EventChannel {
   std::string_view name;
