@@ -17,6 +17,7 @@
 #include "duet/plant/balbot/balbot_scenario.hpp"
 #include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
+#include "recorded_daq_step.hpp"
 #include "sil_run.hpp"
 
 namespace duet::sil {
@@ -154,6 +155,16 @@ TEST(BalbotSil, InRealTimeTheTicksFollowTheWallClock) {
   EXPECT_GE(std::chrono::steady_clock::now() - start, 300ms);
   EXPECT_TRUE(summary.starts_with("balbot_sil: 301 ticks (real time, ")) << summary;
   EXPECT_NE(summary.find("largest |theta| after 4 s none"), std::string::npos) << summary;
+}
+
+// DAQ timestamps are the executive's time on the PC too: the 1 ms task's samples advance by 1 ms on average.
+TEST(BalbotSil, DaqTimestampsOfTheMillisecondTaskAdvanceByItsPeriod) {
+  Program program =
+      balbot_sil({"--plant", "balbot", "--duration", "15", "--real-time", "--xcp", "127.0.0.1:0"}, "sil_daq");
+  const std::string xcp = program.line();  // "balbot_sil: XCP on tcp://HOST:PORT"
+  const std::size_t url = xcp.find("tcp://");
+  ASSERT_NE(url, std::string::npos) << xcp;
+  EXPECT_NEAR(recorded_daq_step(DUET_BALBOT_A2L, xcp.substr(url)), 1e-3, 1e-7);
 }
 
 }  // namespace

@@ -25,7 +25,6 @@
 #include "duet/mps2_an386/cmsdk_uart.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
 #include "duet/mps2_an386/executive_report.hpp"
-#include "duet/mps2_an386/microsecond_clock.hpp"
 #include "duet/mps2_an386/uart_line.hpp"
 #include "duet/rt/executive.hpp"
 #include "duet/xcp/slave.hpp"
@@ -56,17 +55,18 @@ std::array<xcp::OdtEntry, 1> odt_entries{};
 std::array<std::uint8_t, 64 * 1024> xcp_queue_storage{};
 std::array<std::uint8_t, 256> download_buffer{};
 xcp::TransmitQueue xcp_queue{xcp_queue_storage, interrupt_lock};
-const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions},
-                                                .segments = segments,
-                                                .max_cto = max_cto,
-                                                .max_dto = max_dto,
-                                                .identification = "transfer_test",
-                                                .write_atomically = cortex_m::copy_with_interrupts_masked,
-                                                .download_buffer = download_buffer,
-                                                .events = transfer_test::xcp::events,
-                                                .daq = {daq_lists, odts, odt_entries},
-                                                .queue = &xcp_queue,
-                                                .timestamp = board::elapsed_microseconds};  // the A2L's unit
+const xcp::SlaveConfiguration xcp_configuration{
+    .memory = xcp::MemoryMap{regions},
+    .segments = segments,
+    .max_cto = max_cto,
+    .max_dto = max_dto,
+    .identification = "transfer_test",
+    .write_atomically = cortex_m::copy_with_interrupts_masked,
+    .download_buffer = download_buffer,
+    .events = transfer_test::xcp::events,
+    .daq = {daq_lists, odts, odt_entries},
+    .queue = &xcp_queue,
+    .timestamp = board::ExecutivePort::executive_microseconds};  // the A2L's unit
 xcp::Slave slave{xcp_configuration};
 std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
 std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
@@ -97,7 +97,6 @@ class StatusReport {
   void between_ticks() {
     if (executive.ticks() < next_report_) return;
     next_report_ += ticks_per_report;
-    (void)board::elapsed_microseconds();  // asked at least once per wrap of the cycle counter, whether DAQ runs or not
     report();
   }
 

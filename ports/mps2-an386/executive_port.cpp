@@ -9,6 +9,16 @@ namespace {
 
 constexpr std::uint32_t nanoseconds_per_second = 1'000'000'000;
 
+// The executive's time at the last base tick, and the period that advances it.
+struct BaseTime {
+  std::uint32_t period_cycles = 0;
+  std::uint32_t period_microseconds = 0;
+  std::uint32_t period_nanoseconds = 0;  // beyond the whole microseconds
+  std::uint32_t microseconds = 0;
+  std::uint32_t nanoseconds = 0;  // beyond them, below 1000
+};
+BaseTime base_time;
+
 }  // namespace
 
 bool ExecutivePort::configure(const rt::ModelDescription& model) {
@@ -23,18 +33,59 @@ bool ExecutivePort::configure(const rt::ModelDescription& model) {
 }
 
 void ExecutivePort::start_base_timer(std::uint32_t period_ns) {
-  const auto cycles = static_cast<std::uint64_t>(period_ns) * peripheral_clock_hz / nanoseconds_per_second;
-  base_timer.start_periodic_interrupt(static_cast<std::uint32_t>(cycles));
+  const auto cycles =
+      static_cast<std::uint32_t>(static_cast<std::uint64_t>(period_ns) * peripheral_clock_hz / nanoseconds_per_second);
+  {
+    const CriticalSection masked;
+    base_time.period_cycles = cycles;
+    base_time.period_microseconds = period_ns / 1000U;
+    base_time.period_nanoseconds = period_ns % 1000U;
+  }
+  base_timer.start_periodic_interrupt(cycles);
 }
 
 void ExecutivePort::stop_base_timer() {
   base_timer.stop();
-  skip_base_tick();
+  base_timer.clear_interrupt();
+  cortex_m::clear_interrupt_pending(timer0_interrupt);
 }
 
 void ExecutivePort::skip_base_tick() {
   base_timer.clear_interrupt();
   cortex_m::clear_interrupt_pending(timer0_interrupt);
+  count_base_tick();  // the tick happened; the executive drops only its activations
+}
+
+void ExecutivePort::count_base_tick() {
+  const CriticalSection masked;  // a task of higher priority may read the time in the middle
+  base_time.microseconds += base_time.period_microseconds;
+  base_time.nanoseconds += base_time.period_nanoseconds;
+  if (base_time.nanoseconds >= 1000U) {
+    base_time.nanoseconds -= 1000U;
+    ++base_time.microseconds;
+  }
+}
+
+std::uint32_t ExecutivePort::executive_microseconds() {
+  static_assert(peripheral_clock_hz % 1'000'000U == 0, "a whole number of cycles per microsecond");
+  constexpr std::uint32_t cycles_per_microsecond = peripheral_clock_hz / 1'000'000U;
+  constexpr std::uint32_t nanoseconds_per_cycle = 1000U / cycles_per_microsecond;
+  const CriticalSection masked;                // the tick count must not move between the reads
+  if (base_time.period_cycles == 0) return 0;  // the executive has not started
+  // The timer counts down from period - 1 and reloads as it interrupts. A reload between the two reads of the count
+  // shows as a rise; then the tick is pending, not yet counted. Otherwise a pending tick came before the first read.
+  const std::uint32_t first = base_timer.value();
+  bool tick_pending = cortex_m::interrupt_pending(timer0_interrupt);
+  std::uint32_t count = base_timer.value();
+  if (count > first) {
+    tick_pending = true;
+  } else {
+    count = first;
+  }
+  std::uint32_t cycles = base_time.period_cycles - 1U - count;
+  if (tick_pending) cycles += base_time.period_cycles;
+  return base_time.microseconds + cycles / cycles_per_microsecond +
+         (base_time.nanoseconds + (cycles % cycles_per_microsecond) * nanoseconds_per_cycle) / 1000U;
 }
 
 }  // namespace duet::mps2_an386

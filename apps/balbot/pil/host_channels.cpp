@@ -6,7 +6,7 @@
 #include "duet/cortex_m/interrupts.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/cmsdk_uart.hpp"
-#include "duet/mps2_an386/microsecond_clock.hpp"
+#include "duet/mps2_an386/executive_port.hpp"
 #include "duet/mps2_an386/uart_line.hpp"
 #include "robot_channels.hpp"
 #include "robot_firmware.hpp"
@@ -39,7 +39,7 @@ namespace balbot::firmware {
 
 void kick_xcp() { pil::xcp_line.kick(); }
 void kick_application() { pil::application_line.kick(); }
-std::uint32_t microseconds() { return duet::mps2_an386::elapsed_microseconds(); }
+std::uint32_t microseconds() { return duet::mps2_an386::ExecutivePort::executive_microseconds(); }
 void pend_gains_task() { duet::cortex_m::set_interrupt_pending(duet::hardware::interrupt_number("IPCC_RX1")); }
 
 }  // namespace balbot::firmware
