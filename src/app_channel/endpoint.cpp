@@ -133,6 +133,7 @@ bool Endpoint::publish_executive(const ExecutiveReport& report) {
       out.bytes(reinterpret_cast<const std::uint8_t*>(task.name.data()), name_length);
     });
   }
+  if (!queued) reports_dropped_.fetch_add(1, std::memory_order_relaxed);
   return queued;
 }
 
@@ -179,12 +180,13 @@ void Endpoint::answer(std::uint8_t index, ParameterStatus status) {
   const std::size_t value_size =
       index < application_.parameters.size() ? size_of(application_.parameters[index].type) : 0;
   const std::size_t size = 3 + value_size;
-  (void)queue_.push(size + xcp::TransmitQueue::record_header, 0, [&](auto& out) {
+  const bool queued = queue_.push(size + xcp::TransmitQueue::record_header, 0, [&](auto& out) {
     out.packet(size).u8(static_cast<std::uint8_t>(Message::parameter)).u8(index).u8(static_cast<std::uint8_t>(status));
     if (value_size != 0) {
       out.bytes(static_cast<const std::uint8_t*>(application_.parameters[index].address), value_size);
     }
   });
+  if (!queued) answers_dropped_.fetch_add(1, std::memory_order_relaxed);
 }
 
 std::size_t Endpoint::transmit(std::span<std::uint8_t> out) {

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <map>
+#include <vector>
 
 namespace duet::cli {
 namespace {
@@ -20,6 +21,8 @@ class Fields {
       const std::string_view key = word.substr(0, equals);
       if (!values_.emplace(key, equals == std::string_view::npos ? "" : word.substr(equals + 1)).second) {
         problem_ = problem_.empty() ? keyword_ + ": '" + std::string{key} + "' twice" : problem_;
+      } else {
+        order_.push_back(key);
       }
     }
   }
@@ -38,6 +41,16 @@ class Fields {
     }
   }
   [[nodiscard]] const std::string& problem() const { return problem_; }
+  // Every field, as a number, in the line's order.
+  [[nodiscard]] std::vector<std::pair<std::string, std::uint64_t>> numbers() {
+    std::vector<std::pair<std::string, std::uint64_t>> all;
+    for (const std::string_view key : order_) {
+      std::uint64_t value = 0;
+      number(key, value);
+      all.emplace_back(key, value);
+    }
+    return all;
+  }
 
  private:
   const std::string_view* find(std::string_view key) {
@@ -54,6 +67,7 @@ class Fields {
 
   std::string keyword_;
   std::map<std::string_view, std::string_view, std::less<>> values_;
+  std::vector<std::string_view> order_;
   std::string problem_;
 };
 
@@ -105,6 +119,11 @@ ConsoleLine parse_console_line(std::string_view line) {
     fields.number("overruns", end.overruns);
     return checked(end, fields);
   }
+  if (keyword == "duet-lost") {
+    Fields fields{keyword, words};
+    FirmwareLosses losses{fields.numbers()};
+    return checked(losses, fields);
+  }
   return ConsoleText{std::string{line}};
 }
 
@@ -116,6 +135,8 @@ void take(FirmwareReport& report, const ConsoleLine& line) {
     report.tasks[task->index] = *task;
   } else if (const auto* end = std::get_if<FirmwareEnd>(&line)) {
     report.end = *end;
+  } else if (const auto* losses = std::get_if<FirmwareLosses>(&line)) {
+    report.losses = *losses;
   }
 }
 

@@ -4,6 +4,8 @@
 //   duet-status time_s=1.000 ticks=1000 busy_ppm=123456 overruns=0      every second of model time, cumulative
 //   duet-task index=0 name=step_rate_1 activations=1000 overruns=0 min_cycles=120 mean_cycles=130 max_cycles=150
 //                                                                        one per task, after each duet-status
+//   duet-lost xcp_responses=0 daq_samples=0 telemetry=0                  with each duet-status, cumulative: what the
+//                                                                        firmware's channels dropped, by name
 //   duet-end reason=final_tick ticks=10000 overruns=0                    once, when the firmware stops by itself
 //
 // Fields are KEY=VALUE words separated by spaces, in any order; keys a line does not know are skipped, so that the
@@ -13,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -41,6 +44,11 @@ struct FirmwareEnd {
   std::uint64_t overruns = 0;
 };
 
+// Counts of what was lost, each under the firmware's name for it, in the order the line gives them.
+struct FirmwareLosses {
+  std::vector<std::pair<std::string, std::uint64_t>> counts;
+};
+
 struct ConsoleText {
   std::string text;
 };
@@ -50,7 +58,7 @@ struct MalformedLine {
   std::string problem;  // "duet-task: no 'name'"
 };
 
-using ConsoleLine = std::variant<FirmwareStatus, FirmwareTask, FirmwareEnd, ConsoleText, MalformedLine>;
+using ConsoleLine = std::variant<FirmwareStatus, FirmwareTask, FirmwareEnd, FirmwareLosses, ConsoleText, MalformedLine>;
 
 // One line, without its end (a trailing '\r' is ignored).
 [[nodiscard]] ConsoleLine parse_console_line(std::string_view line);
@@ -60,6 +68,7 @@ struct FirmwareReport {
   std::optional<FirmwareStatus> status;
   std::vector<FirmwareTask> tasks;  // by index (at most 256); an index never reported has an empty name
   std::optional<FirmwareEnd> end;
+  std::optional<FirmwareLosses> losses;  // the latest
 };
 
 // Takes in a parsed line; text and malformed lines change nothing.

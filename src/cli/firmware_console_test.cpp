@@ -33,6 +33,11 @@ TEST(FirmwareConsole, TheLinesTheFirmwareReportsWith) {
   EXPECT_EQ(task.mean_cycles, 130U);
   EXPECT_EQ(task.max_cycles, 150U);
 
+  const FirmwareLosses losses = parsed_as<FirmwareLosses>("duet-lost xcp_responses=0 daq_samples=7 telemetry=1");
+  using Count = std::pair<std::string, std::uint64_t>;
+  EXPECT_EQ(losses.counts, (std::vector<Count>{{"xcp_responses", 0}, {"daq_samples", 7}, {"telemetry", 1}}));
+  EXPECT_EQ(problem_of("duet-lost daq_samples=many"), "duet-lost: 'daq_samples' is not a number: 'many'");
+
   const FirmwareEnd end = parsed_as<FirmwareEnd>("duet-end reason=final_tick ticks=10000 overruns=0");
   EXPECT_EQ(end.reason, "final_tick");
   EXPECT_EQ(end.ticks, 10000U);

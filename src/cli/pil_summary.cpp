@@ -77,6 +77,13 @@ void firmware_lines(const PilRun& run, std::ostream& out) {
   if (firmware.end) out << "; ended: " << firmware.end->reason;
   out << '\n';
   if (!firmware.tasks.empty()) task_table(run, out);
+  if (firmware.losses) {
+    std::string lost;
+    for (const auto& [name, count] : firmware.losses->counts) {
+      if (count != 0) lost += (lost.empty() ? "" : ", ") + std::to_string(count) + " " + name;
+    }
+    out << "  lost      " << (lost.empty() ? "nothing" : lost) << " (the firmware's channels)\n";
+  }
 }
 
 void xcp_lines(const PilRun& run, std::ostream& out) {

@@ -90,6 +90,7 @@ TEST(PilSummary, TheWholeText) {
                                         "min_cycles=100 mean_cycles=150 max_cycles=2090"));
   take(run.firmware, parse_console_line("duet-task index=1 name=t activations=30 overruns=0 min_cycles=1 "
                                         "mean_cycles=2 max_cycles=3"));
+  take(run.firmware, parse_console_line("duet-lost xcp_responses=0 daq_samples=7 telemetry_samples=1"));
   run.xcp = XcpTraffic{12, 340, 6, 60, 0, 1};
   EXPECT_EQ(format_summary(run),
             "summary\n"
@@ -104,6 +105,7 @@ TEST(PilSummary, TheWholeText) {
             "            task        activations  overruns  mean instr  max instr  max us (est.)\n"
             "            step_rate_1        3000         1        1500      20900         100.00\n"
             "            t                    30         0          20         30           0.14\n"
+            "  lost      7 daq_samples, 1 telemetry_samples (the firmware's channels)\n"
             "  xcp       6 frames to the slave (60 bytes), 12 to the master (340 bytes), 0 DAQ frames dropped, 1 "
             "masters served\n");
 }

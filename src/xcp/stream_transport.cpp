@@ -6,8 +6,10 @@ void StreamTransport::receive(std::span<const std::uint8_t> bytes) {
   decoder_.feed(bytes, [this](std::uint16_t, std::span<const std::uint8_t> command) {
     const std::span<const std::uint8_t> response = slave_.handle(command);
     if (response.empty()) return;
-    (void)queue_.push(response.size() + TransmitQueue::record_header, 0,
-                      [&](auto& out) { out.packet(response.size()).bytes(response.data(), response.size()); });
+    const bool queued = queue_.push(response.size() + TransmitQueue::record_header, 0, [&](auto& out) {
+      out.packet(response.size()).bytes(response.data(), response.size());
+    });
+    if (!queued) responses_dropped_.fetch_add(1, std::memory_order_relaxed);
   });
 }
 

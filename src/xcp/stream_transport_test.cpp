@@ -76,5 +76,13 @@ TEST(StreamTransport, DaqPacketsFollowInTheSameSequenceAndWaitForRoom) {
   EXPECT_EQ(line.sent(7), line.frame(8, {0x00, 0x01, 0x02}));  // ODT 0, two bytes; counter 8 follows the responses
 }
 
+TEST(StreamTransport, AResponseThatDoesNotFitTheQueueIsCounted) {
+  Line line;
+  for (int k = 0; k < 64; ++k) line.transport.receive(line.frame(0, {0xFF, 0x00}));      // nobody reads the answers
+  const std::size_t answered = line.sent(4096).size() / line.frame(0, Bytes(8)).size();  // CONNECT's are 8 bytes
+  EXPECT_GT(line.transport.responses_dropped(), 0U);
+  EXPECT_EQ(answered + line.transport.responses_dropped(), 64U);
+}
+
 }  // namespace
 }  // namespace duet::xcp

@@ -112,8 +112,7 @@ void on_task_finished(std::size_t task) {
 }
 
 void publish_executive(const app_channel::ExecutiveReport& report) {
-  (void)endpoint.publish_executive(
-      report);  // a full queue loses this second's account, counted nowhere: the next comes
+  (void)endpoint.publish_executive(report);  // a full queue loses this second's account (counted): the next comes
   kick_application();
 }
 
@@ -132,6 +131,13 @@ void receive_from_linux(std::span<double> message_bytes) {
   for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0.0;
 }
 
-std::uint32_t telemetry_dropped() { return endpoint.samples_dropped(); }
+ChannelLosses channel_losses() {
+  return {.xcp_responses = transport.responses_dropped(),
+          .daq_overloads = slave.overloads(),
+          .xcp_garbage_bytes = static_cast<std::uint32_t>(transport.dropped_bytes()),
+          .telemetry = endpoint.samples_dropped(),
+          .executive_reports = endpoint.reports_dropped(),
+          .answers = endpoint.answers_dropped()};
+}
 
 }  // namespace balbot::firmware

@@ -36,6 +36,16 @@ void send_to_linux(std::span<const double> message_bytes);
 void receive_from_linux(std::span<double> message_bytes);
 // The executive's account for the dashboard's Status page, on the application channel (from the background loop).
 void publish_executive(const duet::app_channel::ExecutiveReport& report);
-[[nodiscard]] std::uint32_t telemetry_dropped();
+
+// What the channels lost so far, each counted where it was dropped.
+struct ChannelLosses {
+  std::uint32_t xcp_responses;      // responses that found the transmit queue full (a master that does not read)
+  std::uint32_t daq_overloads;      // DAQ samples that did not fit the transmit queue
+  std::uint32_t xcp_garbage_bytes;  // bytes the XCP decoder skipped to find the next frame
+  std::uint32_t telemetry;          // telemetry samples that did not fit the application channel's queue
+  std::uint32_t executive_reports;  // executive accounts that did not fit whole
+  std::uint32_t answers;            // answers to parameter writes that did not fit
+};
+[[nodiscard]] ChannelLosses channel_losses();
 
 }  // namespace balbot::firmware

@@ -30,7 +30,7 @@ void start_host_channels() {
 
 HostChannelCounters host_channel_counters() {
   return {xcp_line.bytes_received(), xcp_line.bytes_sent(), application_line.bytes_received(),
-          application_line.bytes_sent(), firmware::telemetry_dropped()};
+          application_line.bytes_sent(), firmware::channel_losses()};
 }
 
 }  // namespace balbot::pil

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "duet/mps2_an386/plant_link.hpp"
+#include "robot_channels.hpp"
 
 namespace balbot::pil {
 
@@ -21,7 +22,7 @@ struct HostChannelCounters {
   std::uint32_t xcp_bytes_sent;
   std::uint32_t application_bytes_received;
   std::uint32_t application_bytes_sent;
-  std::uint32_t telemetry_dropped;
+  firmware::ChannelLosses lost;
 };
 HostChannelCounters host_channel_counters();
 

@@ -4,7 +4,9 @@
 //   duet-pil model=balbot base_period_ns=1000000 tasks=11 duration_ms=10000       at start (0: until stopped)
 //   duet-status time_s=1.000 ticks=1000 busy_ppm=123456 overruns=0              every second of model time
 //   duet-task index=0 name=rate_1 activations=1000 overruns=0 min_cycles=... mean_cycles=... max_cycles=...
-//   duet-channels xcp_received=... xcp_sent=... application_received=... application_sent=... telemetry_dropped=...
+//   duet-channels xcp_received=... xcp_sent=... application_received=... application_sent=...
+//   duet-lost xcp_responses=... daq_samples=... xcp_garbage_bytes=... telemetry_samples=... executive_reports=...
+//             parameter_answers=...                                    what the channels dropped, each counted
 //   duet-end reason=final_tick ticks=10001 overruns=0 link=ok                  once, when the model stopped
 //
 // A task line per task follows every status line, then the channels' line. Cycles count the board's 25 MHz timer
@@ -66,7 +68,14 @@ class StatusReport {
     line_.append(" xcp_sent=").append(counters.xcp_bytes_sent);
     line_.append(" application_received=").append(counters.application_bytes_received);
     line_.append(" application_sent=").append(counters.application_bytes_sent);
-    line_.append(" telemetry_dropped=").append(counters.telemetry_dropped);
+    emit();
+    line_.clear();
+    line_.append("duet-lost xcp_responses=").append(counters.lost.xcp_responses);
+    line_.append(" daq_samples=").append(counters.lost.daq_overloads);
+    line_.append(" xcp_garbage_bytes=").append(counters.lost.xcp_garbage_bytes);
+    line_.append(" telemetry_samples=").append(counters.lost.telemetry);
+    line_.append(" executive_reports=").append(counters.lost.executive_reports);
+    line_.append(" parameter_answers=").append(counters.lost.answers);
     emit();
   }
 

@@ -238,5 +238,24 @@ TEST_F(AppChannel, AFullQueueDropsTelemetryButNeverAnswers) {
   EXPECT_EQ(samples.size(), published);
 }
 
+TEST_F(AppChannel, AnAccountThatDoesNotFitIsCounted) {
+  exchange();
+  std::uint32_t published = 0;
+  while (endpoint.publish(published)) ++published;
+  EXPECT_EQ(endpoint.reports_dropped(), 0U);
+  EXPECT_FALSE(endpoint.publish_executive({.ticks = 1, .cycle_hz = 1}));
+  EXPECT_EQ(endpoint.reports_dropped(), 1U);
+}
+
+TEST_F(AppChannel, AnswersThatFindTheQueueFullAreCounted) {
+  exchange();
+  std::uint32_t published = 0;
+  while (endpoint.publish(published)) ++published;
+  const std::vector<std::uint8_t> request = peer.set_request("I", 0.1).value();
+  for (int k = 0; k < 8; ++k) endpoint.receive(request);  // a peer that writes without reading
+  EXPECT_GT(endpoint.answers_dropped(), 0U);
+  EXPECT_LT(endpoint.answers_dropped(), 8U);  // the room kept for answers took some
+}
+
 }  // namespace
 }  // namespace duet::app_channel

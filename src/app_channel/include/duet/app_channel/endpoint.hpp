@@ -84,6 +84,10 @@ class Endpoint {
   std::size_t transmit(std::span<std::uint8_t> out);
 
   [[nodiscard]] std::uint32_t samples_dropped() const { return samples_dropped_.load(std::memory_order_relaxed); }
+  // Executive accounts that did not fit whole, and answers to parameter writes that did not fit at all (the other
+  // side then sees no confirmation of its write).
+  [[nodiscard]] std::uint32_t reports_dropped() const { return reports_dropped_.load(std::memory_order_relaxed); }
+  [[nodiscard]] std::uint32_t answers_dropped() const { return answers_dropped_.load(std::memory_order_relaxed); }
   [[nodiscard]] std::size_t garbage_bytes() const { return decoder_.dropped_bytes(); }
 
  private:
@@ -100,6 +104,8 @@ class Endpoint {
   std::atomic<bool> describe_requested_{true};
   std::size_t description_step_ = 0;  // 0: not describing; else the next step, counted from 1
   std::atomic<std::uint32_t> samples_dropped_{0};
+  std::atomic<std::uint32_t> reports_dropped_{0};
+  std::atomic<std::uint32_t> answers_dropped_{0};
   std::size_t telemetry_size_ = 0;  // of a telemetry packet
 };
 
