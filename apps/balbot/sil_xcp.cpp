@@ -28,36 +28,13 @@ void unlock_queue(std::uint32_t) { queue_mutex.unlock(); }
 
 }  // namespace
 
-// The firmware's sizes (apps/balbot/firmware/robot_channels.cpp), so that a master plans DAQ the same on both.
+// The firmware's slave, as the generated code sizes it, so that a master plans DAQ the same on both.
 struct SilXcp::Slave {
-  static constexpr std::size_t max_cto = 248;
-  static constexpr std::size_t max_dto = 248;
-
-  std::array<xcp::CalibrationSegment, 1> segments{balbot::xcp::calibration_segment()};
-  std::array<xcp::MemoryRegion, 2> regions{balbot::xcp::signals_region(), balbot::xcp::executive_region()};
-  std::array<xcp::DaqList, 8> daq_lists{};
-  std::array<xcp::Odt, 64> odts{};
-  std::array<xcp::OdtEntry, 512> odt_entries{};
-  std::vector<std::uint8_t> queue_storage = std::vector<std::uint8_t>(std::size_t{64} * 1024);
-  std::array<std::uint8_t, 256> download_buffer{};
-  xcp::TransmitQueue queue{queue_storage, {lock_queue, unlock_queue}};
-  xcp::SlaveConfiguration configuration{.memory = xcp::MemoryMap{regions},
-                                        .segments = segments,
-                                        .max_cto = max_cto,
-                                        .max_dto = max_dto,
-                                        .identification = "balbot",
-                                        .download_buffer = download_buffer,
-                                        .events = balbot::xcp::events,
-                                        .daq = {daq_lists, odts, odt_entries},
-                                        .queue = &queue,
-                                        .timestamp = microseconds,
-                                        .timestamp_unit = 3,  // 1 us, the A2L's
-                                        .timestamp_ticks = 1};
-  xcp::Slave slave{configuration};
+  balbot::xcp::Slave slave{{.timestamp = microseconds, .queue_lock = {lock_queue, unlock_queue}}};
   xcp::host::SlaveServer server;
 
   explicit Slave(std::mutex& lock)
-      : server{slave, queue, [&lock](const std::function<void()>& work) {
+      : server{slave.protocol(), slave.queue(), [&lock](const std::function<void()>& work) {
                  const std::lock_guard held{lock};
                  work();
                }} {}
@@ -75,7 +52,7 @@ std::uint16_t SilXcp::port() const { return slave_->server.port(); }
 void SilXcp::tick_started(double now_s) { model_microseconds = static_cast<std::uint32_t>(std::llround(now_s * 1e6)); }
 
 void SilXcp::task_finished(std::size_t task) {
-  slave_->slave.on_event(static_cast<std::uint16_t>(task));
+  slave_->slave.protocol().on_event(static_cast<std::uint16_t>(task));
   slave_->server.notify();
 }
 

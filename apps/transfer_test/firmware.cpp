@@ -41,37 +41,15 @@ namespace xcp = duet::xcp;
 
 constexpr unsigned console_uart = 3;
 
-// XCP: the model's calibration segment (the table, `playing`) and signals at the A2L's addresses, an event per task.
-// The queue holds the whole play-out's DAQ packets (4096 of 11 bytes with their LEN/CTR: 45 KB), as the
-// software-in-the-loop test's does: a host that stalls for a while loses nothing.
-constexpr std::size_t max_cto = 248;
-constexpr std::size_t max_dto = 248;
-constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
-const std::array<xcp::CalibrationSegment, 1> segments{transfer_test::xcp::calibration_segment()};
-const std::array<xcp::MemoryRegion, 1> regions{transfer_test::xcp::signals_region()};
-std::array<xcp::DaqList, 1> daq_lists{};
-std::array<xcp::Odt, 1> odts{};
-std::array<xcp::OdtEntry, 1> odt_entries{};
-std::array<std::uint8_t, 64 * 1024> xcp_queue_storage{};
-std::array<std::uint8_t, 256> download_buffer{};
-xcp::TransmitQueue xcp_queue{xcp_queue_storage, interrupt_lock};
-const xcp::SlaveConfiguration xcp_configuration{
-    .memory = xcp::MemoryMap{regions},
-    .segments = segments,
-    .max_cto = max_cto,
-    .max_dto = max_dto,
-    .identification = "transfer_test",
-    .write_atomically = cortex_m::copy_with_interrupts_masked,
-    .download_buffer = download_buffer,
-    .events = transfer_test::xcp::events,
-    .daq = {daq_lists, odts, odt_entries},
-    .queue = &xcp_queue,
-    .timestamp = board::ExecutivePort::executive_microseconds};  // the A2L's unit
-xcp::Slave slave{xcp_configuration};
-std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
-std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
-xcp::StreamTransport xcp_transport{slave,   xcp_queue,        xcp::ethernet_framing, xcp_decoder_buffer,
-                                   max_cto, xcp_packet_buffer};
+// XCP: the model's slave as its generated code sizes it (one DAQ list, a queue for the whole play-out).
+transfer_test::xcp::Slave slave{{.timestamp = board::ExecutivePort::executive_microseconds,  // the A2L's unit
+                                 .write_atomically = cortex_m::copy_with_interrupts_masked,
+                                 .queue_lock = {cortex_m::mask_interrupts, cortex_m::restore_interrupts}}};
+std::array<std::uint8_t, xcp::ethernet_framing.frame_size(transfer_test::xcp::max_cto)> xcp_decoder_buffer{};
+std::array<std::uint8_t, transfer_test::xcp::max_dto> xcp_packet_buffer{};
+xcp::StreamTransport xcp_transport{
+    slave.protocol(), slave.queue(), xcp::ethernet_framing, xcp_decoder_buffer, transfer_test::xcp::max_cto,
+    xcp_packet_buffer};
 board::UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_base}, board::uart0_receive_interrupt,
                                                board::uart0_transmit_interrupt};
 
@@ -80,8 +58,8 @@ board::UartLine<xcp::StreamTransport> xcp_line{board::CmsdkUart{board::uart0_bas
 class TransferTestPort : public board::ExecutivePort {
  public:
   void task_finished(std::size_t task) {
-    slave.on_event(static_cast<std::uint16_t>(task));
-    if (xcp_queue.free_bytes() != xcp_queue.capacity()) xcp_line.kick();
+    slave.protocol().on_event(static_cast<std::uint16_t>(task));
+    if (slave.queue().free_bytes() != slave.queue().capacity()) xcp_line.kick();
   }
   void idle();
 };

@@ -68,25 +68,9 @@ void unlock_queue(std::uint32_t) { queue_mutex.unlock(); }
 // The executive's clock for DAQ timestamps, in microseconds (the slave's default timestamp unit).
 std::uint32_t microseconds() { return static_cast<std::uint32_t>(duet::host::RealTimePort::monotonic_ns() / 1000U); }
 
-// The slave's side: the model's memory as the generated code declares it to XCP, DAQ storage, the queue, the server.
+// The slave's side: the model's slave as its generated code sizes it.
 struct Target {
-  std::array<xcp::CalibrationSegment, 1> segments{transfer_test::xcp::calibration_segment()};
-  std::array<xcp::MemoryRegion, 1> regions{transfer_test::xcp::signals_region()};
-  std::array<xcp::DaqList, 1> lists{};
-  std::array<xcp::Odt, 1> odts{};
-  std::array<xcp::OdtEntry, 1> entries{};
-  std::vector<std::uint8_t> queue_storage = std::vector<std::uint8_t>(1 << 16);
-  std::array<std::uint8_t, 256> download_buffer{};
-  xcp::TransmitQueue queue{queue_storage, {lock_queue, unlock_queue}};
-  xcp::SlaveConfiguration configuration{.memory = xcp::MemoryMap{regions},
-                                        .segments = segments,
-                                        .max_cto = 252,
-                                        .download_buffer = download_buffer,
-                                        .events = transfer_test::xcp::events,
-                                        .daq = {lists, odts, entries},
-                                        .queue = &queue,
-                                        .timestamp = microseconds};
-  xcp::Slave slave{configuration};
+  transfer_test::xcp::Slave slave{{.timestamp = microseconds, .queue_lock = {lock_queue, unlock_queue}}};
 };
 
 // Where the A2L says a variable is.
@@ -121,7 +105,7 @@ class XcpPort : public duet::host::RealTimePort {
   XcpPort(const rt::ModelDescription& model_description, Target& target)
       : RealTimePort(model_description), target_(target) {}
   void task_finished(std::size_t task) {
-    target_.slave.on_event(static_cast<std::uint16_t>(task));
+    target_.slave.protocol().on_event(static_cast<std::uint16_t>(task));
     if (server != nullptr) server->notify();
   }
   SlaveServer* server = nullptr;
@@ -224,12 +208,14 @@ void print(const Recording& recording, const std::string& slave_side) {
 
 // Software in the loop: the slave and the executive in this process, in real time, XCP on localhost TCP.
 int run_in_process(const Addresses& at) {
-  Target target;
+  const auto target_storage = std::make_unique<Target>();  // 64 KB of queue: not on the stack
+  Target& target = *target_storage;
   const rt::ModelDescription& description = transfer_test::description;
   XcpPort port{description, target};
   rt::Executive<XcpPort, 1> executive{description, port};
   port.attach(executive);
-  SlaveServer server{target.slave, target.queue, [&port](const std::function<void()>& work) { port.exclusive(work); }};
+  SlaveServer server{target.slave.protocol(), target.slave.queue(),
+                     [&port](const std::function<void()>& work) { port.exclusive(work); }};
   port.server = &server;
   if (!server.start({}).ok() || executive.initialize() != rt::TaskTableError::none || !executive.begin()) {
     return fail("the target did not start");
@@ -246,7 +232,7 @@ int run_in_process(const Addresses& at) {
   // The slave's own counts too: what it could not queue, and steps that overran.
   const std::uint32_t overruns = executive.statistics(0).overruns;
   print(recording.value(), ", " + std::to_string(overruns) + " overruns");
-  return recording.value().complete() && target.slave.overloads() == 0 && overruns == 0 ? success : failure;
+  return recording.value().complete() && target.slave.protocol().overloads() == 0 && overruns == 0 ? success : failure;
 }
 
 // A slave elsewhere: its own console tells of its overruns.

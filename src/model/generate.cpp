@@ -284,15 +284,28 @@ class FileWriter {
   }
 
   std::string xcp_header() const {
+    const XcpSettings& limits = program_.model->xcp;
     std::string text = banner("//", source_);
-    text += "// What XCP may reach of the model (duet/xcp/memory_map.hpp), at the A2L's addresses, and its events:\n";
-    text += "// one per task, numbered as the task table.\n#pragma once\n\n#include <cstdint>\n\n";
+    text +=
+        "// The model's XCP slave: what XCP may reach of the model (duet/xcp/memory_map.hpp) at the A2L's addresses,\n";
+    text += "// its events (one per task, numbered as the task table), its limits and its storage. " + name_ + ".a2l\n";
+    text += "// says the same: duet gen writes both from one description.\n#pragma once\n\n";
+    text += "#include <array>\n#include <cstddef>\n#include <cstdint>\n\n";
     text += "#include \"" + name_ + ".hpp\"\n#include \"duet/rt/executive_account.hpp\"\n";
-    text += "#include \"duet/xcp/daq.hpp\"\n#include \"duet/xcp/memory_map.hpp\"\n\n";
+    text += "#include \"duet/xcp/daq.hpp\"\n#include \"duet/xcp/memory_map.hpp\"\n#include \"duet/xcp/slave.hpp\"\n";
+    text += "#include \"duet/xcp/transmit_queue.hpp\"\n\n";
     text += "namespace " + name_ + "::xcp {\n\n";
     text += "inline constexpr std::uint32_t parameters_address = " + std::to_string(parameters_xcp_address) + ";\n";
     text += "inline constexpr std::uint32_t signals_address = " + std::to_string(signals_xcp_address) + ";\n";
     text += "inline constexpr std::uint32_t executive_address = " + std::to_string(executive_xcp_address) + ";\n\n";
+    text += "// The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).\n";
+    text += "inline constexpr std::uint8_t max_cto = " + std::to_string(limits.max_cto) + ";\n";
+    text += "inline constexpr std::uint16_t max_dto = " + std::to_string(limits.max_dto) + ";\n";
+    text += "inline constexpr std::size_t daq_lists = " + std::to_string(limits.daq_lists) + ";\n";
+    text += "inline constexpr std::size_t odts = " + std::to_string(limits.odts) + ";\n";
+    text += "inline constexpr std::size_t odt_entries = " + std::to_string(limits.odt_entries) + ";\n";
+    text += "inline constexpr std::size_t queue_bytes = " + std::to_string(limits.queue_bytes) + ";\n";
+    text += "inline constexpr std::size_t download_bytes = " + std::to_string(limits.download_bytes) + ";\n\n";
     text += "inline duet::xcp::CalibrationSegment calibration_segment() {\n";
     text += "  return {.name = \"parameters\",\n          .address = parameters_address,\n";
     text += "          .size = sizeof(Parameters),\n";
@@ -318,7 +331,65 @@ class FileWriter {
       text += "    {.name = " + quoted(task.name) + ", .time_cycle = " + std::to_string(cycle) +
               ", .time_unit = " + std::to_string(unit) + "},\n";
     }
-    text += "};\n\n}  // namespace " + name_ + "::xcp\n";
+    text += "};\n\n";
+    text += slave_class();
+    return text + "\n}  // namespace " + name_ + "::xcp\n";
+  }
+
+  // The slave with the storage the limits ask for: what the A2L promises is what the slave has.
+  std::string slave_class() const {
+    const bool calibration = !parameters_.empty();
+    const bool measurement = !signals_.empty();
+    std::string text =
+        "// What the port adds to the slave: the clock that stamps DAQ samples, in microseconds (the A2L's unit); the\n"
+        "// copy that writes calibration bytes so that no task sees them half-written; the transmit queue's lock\n"
+        "// against the tasks that queue samples.\n"
+        "struct SlavePort {\n"
+        "  std::uint32_t (*timestamp)() = nullptr;\n"
+        "  duet::xcp::AtomicWrite write_atomically = nullptr;\n"
+        "  duet::xcp::QueueLock queue_lock{};\n"
+        "};\n\n"
+        "// The slave and its storage. It refers to itself: one per program, in static storage.\n"
+        "class Slave {\n"
+        " public:\n"
+        "  explicit Slave(const SlavePort& port)\n"
+        "      : queue_{queue_storage_, port.queue_lock},\n"
+        "        configuration_{.memory = duet::xcp::MemoryMap{regions_},\n"
+        "                       .segments = segments_,\n"
+        "                       .max_cto = max_cto,\n"
+        "                       .max_dto = max_dto,\n"
+        "                       .identification = " +
+        quoted(name_) +
+        ",\n"
+        "                       .write_atomically = port.write_atomically,\n"
+        "                       .download_buffer = download_buffer_,\n"
+        "                       .events = events,\n"
+        "                       .daq = {daq_lists_, odts_, odt_entries_},\n"
+        "                       .queue = &queue_,\n"
+        "                       .timestamp = port.timestamp,\n"
+        "                       .timestamp_unit = 3,  // 1 us\n"
+        "                       .timestamp_ticks = 1},\n"
+        "        slave_{configuration_} {}\n"
+        "  Slave(const Slave&) = delete;\n"
+        "  Slave& operator=(const Slave&) = delete;\n\n"
+        "  // The protocol layer, for the transport (duet::xcp::StreamTransport, the host's SlaveServer).\n"
+        "  duet::xcp::Slave& protocol() { return slave_; }\n"
+        "  duet::xcp::TransmitQueue& queue() { return queue_; }\n\n"
+        " private:\n";
+    text += "  std::array<duet::xcp::CalibrationSegment, " + std::string{calibration ? "1" : "0"} + "> segments_{" +
+            (calibration ? "calibration_segment()" : "") + "};\n";
+    text += "  std::array<duet::xcp::MemoryRegion, " + std::string{measurement ? "2" : "1"} + "> regions_{" +
+            (measurement ? "signals_region(), " : "") + "executive_region()};\n";
+    text +=
+        "  std::array<duet::xcp::DaqList, daq_lists> daq_lists_{};\n"
+        "  std::array<duet::xcp::Odt, odts> odts_{};\n"
+        "  std::array<duet::xcp::OdtEntry, odt_entries> odt_entries_{};\n"
+        "  std::array<std::uint8_t, queue_bytes> queue_storage_{};\n"
+        "  std::array<std::uint8_t, download_bytes> download_buffer_{};\n"
+        "  duet::xcp::TransmitQueue queue_;\n"
+        "  duet::xcp::SlaveConfiguration configuration_;\n"
+        "  duet::xcp::Slave slave_;\n"
+        "};\n";
     return text;
   }
 
@@ -326,6 +397,10 @@ class FileWriter {
     using xcp::host::A2lDescription;
     A2lDescription description;
     description.module = name_;
+    const XcpSettings& limits = program_.model->xcp;
+    description.max_cto = static_cast<std::uint8_t>(limits.max_cto);
+    description.max_dto = static_cast<std::uint16_t>(limits.max_dto);
+    description.max_daq_lists = static_cast<std::uint16_t>(limits.daq_lists);
     description.description = program_.model->description.empty() ? name_ : program_.model->description;
     while (!description.description.empty() && description.description.back() == '\n') {
       description.description.pop_back();

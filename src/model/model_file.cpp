@@ -3,12 +3,14 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
@@ -268,6 +270,63 @@ Trigger trigger(const YAML::Node& node) {
   return result;
 }
 
+// A whole number in [low, high].
+std::uint32_t whole_number(const YAML::Node& node, const std::string& what, std::uint32_t low, std::uint32_t high) {
+  const double value = number(node, what);
+  if (value != std::floor(value) || value < low || value > high) {
+    fail(node, what + " must be a whole number " + std::to_string(low) + ".." + std::to_string(high));
+  }
+  return static_cast<std::uint32_t>(value);
+}
+
+XcpSettings xcp_settings(const YAML::Node& node) {
+  map_of(node, "xcp");
+  only(node, "xcp",
+       {"max_cto", "max_dto", "daq_lists", "odts", "odt_entries", "queue_bytes", "download_bytes", "identification",
+        "timestamp_bytes"});
+  XcpSettings xcp;
+  xcp.location = location_of(node);
+  // XCP's own limits: a CTO length is a byte, a DTO length a word; DAQ list numbers are words, and a packet's
+  // identification byte stays below the response codes (0xFC and up), so a list has at most 252 ODTs.
+  if (node["max_cto"]) xcp.max_cto = whole_number(node["max_cto"], "max_cto", 8, 255);
+  if (node["max_dto"]) xcp.max_dto = whole_number(node["max_dto"], "max_dto", 8, 65535);
+  if (node["daq_lists"]) xcp.daq_lists = whole_number(node["daq_lists"], "daq_lists", 1, 65535);
+  if (node["odts"]) xcp.odts = whole_number(node["odts"], "odts", 1, 65535);
+  if (node["odt_entries"]) xcp.odt_entries = whole_number(node["odt_entries"], "odt_entries", 1, 65535);
+  if (node["queue_bytes"]) xcp.queue_bytes = whole_number(node["queue_bytes"], "queue_bytes", 64, 1U << 24U);
+  if (node["download_bytes"]) xcp.download_bytes = whole_number(node["download_bytes"], "download_bytes", 8, 65535);
+  if (const YAML::Node identification = node["identification"]) {
+    constexpr std::array<std::string_view, 4> kinds{"absolute", "relative_byte", "relative_word",
+                                                    "relative_word_aligned"};
+    xcp.identification = identification.IsScalar() ? identification.Scalar() : "";
+    if (std::find(kinds.begin(), kinds.end(), xcp.identification) == kinds.end()) {
+      fail(identification, "identification must be absolute, relative_byte, relative_word or relative_word_aligned");
+    }
+  }
+  if (const YAML::Node timestamp = node["timestamp_bytes"]) {
+    xcp.timestamp_bytes = whole_number(timestamp, "timestamp_bytes", 1, 4);
+    if (xcp.timestamp_bytes == 3) fail(timestamp, "timestamp_bytes must be 1, 2 or 4");
+  }
+  // What a table or a packet must hold at least, so that a master can use what the A2L promises.
+  if (xcp.identification == "absolute" && xcp.odts > 252) {
+    fail(node["odts"], "odts must be at most 252 with absolute identification",
+         "an absolute ODT number is one byte below 0xFC; relative identification numbers ODTs per list");
+  }
+  if (xcp.identification == "relative_byte" && xcp.daq_lists > 256) {
+    fail(node["daq_lists"], "daq_lists must be at most 256 with relative_byte identification");
+  }
+  if (xcp.download_bytes < xcp.max_cto - 2) {
+    fail(node["download_bytes"] ? node["download_bytes"] : node,
+         "download_bytes must hold one DOWNLOAD's data: at least max_cto - 2 = " + std::to_string(xcp.max_cto - 2));
+  }
+  const std::uint32_t largest_packet = std::max(xcp.max_cto, xcp.max_dto) + 2;  // with the queue's record header
+  if (xcp.queue_bytes < 2 * largest_packet) {
+    fail(node["queue_bytes"] ? node["queue_bytes"] : node,
+         "queue_bytes must hold a DAQ packet and a response: at least " + std::to_string(2 * largest_packet));
+  }
+  return xcp;
+}
+
 Block block(const YAML::Node& node, double base_period_us) {
   map_of(node, "a block");
   Block result;
@@ -340,7 +399,7 @@ Model model(const YAML::Node& root, const std::string& file) {
   }
   result.version = version;
   only(root, "the model",
-       {"duet_model", "name", "description", "base_period_us", "constants", "parameters", "signals", "blocks"});
+       {"duet_model", "name", "description", "base_period_us", "constants", "parameters", "signals", "blocks", "xcp"});
   if (!root["name"]) fail(root, "'name' is missing");
   result.name = identifier(root["name"], "the model name");
   if (root["description"]) result.description = root["description"].Scalar();
@@ -418,6 +477,7 @@ Model model(const YAML::Node& root, const std::string& file) {
       result.signals.push_back(signal);
     }
   }
+  if (const YAML::Node xcp = root["xcp"]) result.xcp = xcp_settings(xcp);
   const YAML::Node blocks = root["blocks"];
   if (!blocks || !blocks.IsSequence() || blocks.size() == 0) fail(root, "'blocks' is missing or empty");
   for (const auto& node : blocks) result.blocks.push_back(block(node, result.base_period_us));

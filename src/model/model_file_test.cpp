@@ -6,6 +6,28 @@
 namespace duet::model {
 namespace {
 
+TEST(ModelFile, TheXcpSectionChangesTheSlavesDefaults) {
+  const auto model = parse_model(R"(duet_model: 1
+name: a
+base_period_us: 100
+xcp: {max_dto: 1024, daq_lists: 4, odts: 500, identification: relative_word_aligned, timestamp_bytes: 2,
+      queue_bytes: 8192}
+blocks:
+  - {name: g, type: Gain}
+)",
+                                 "m.yaml");
+  ASSERT_TRUE(model.ok()) << model.error();
+  const XcpSettings& xcp = model.value().xcp;
+  EXPECT_EQ(xcp.max_cto, 248U);  // a default
+  EXPECT_EQ(xcp.max_dto, 1024U);
+  EXPECT_EQ(xcp.daq_lists, 4U);
+  EXPECT_EQ(xcp.odts, 500U);
+  EXPECT_EQ(xcp.identification, "relative_word_aligned");
+  EXPECT_EQ(xcp.timestamp_bytes, 2U);
+  EXPECT_EQ(xcp.queue_bytes, 8192U);
+  EXPECT_EQ(xcp.location.line, 4);
+}
+
 TEST(ModelFile, ReadsAWholeModel) {
   const auto model = parse_model(R"(duet_model: 1
 name: step_time
@@ -71,7 +93,7 @@ const Malformed corpus[] = {
     {"unknown_field", "duet_model: 1\nnmae: a\n",
      "m.yaml:2:1: error: unknown field 'nmae' in the model (known: "
      "duet_model, name, description, base_period_us, constants, "
-     "parameters, signals, blocks)"},
+     "parameters, signals, blocks, xcp)"},
     {"bad_name", "duet_model: 1\nname: 3dof\n",
      "m.yaml:2:7: error: the model name '3dof' is not a name (letters, "
      "digits and _, not starting with a digit)"},
@@ -159,6 +181,31 @@ const Malformed corpus[] = {
      "duet_model: 1\nname: a\nbase_period_us: 100\nblocks:\n  - {name: s, type: Subsystem, blocks: "
      "{g: 1}}\n",
      "m.yaml:5:40: error: blocks must be a list"},
+    {"xcp_unknown_field",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {max_cro: 8}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:4:7: error: unknown field 'max_cro' in xcp (known: max_cto, max_dto, daq_lists, odts, odt_entries, "
+     "queue_bytes, download_bytes, identification, timestamp_bytes)"},
+    {"xcp_cto_too_long",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {max_cto: 256}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:4:16: error: max_cto must be a whole number 8..255"},
+    {"xcp_identification",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {identification: relative}\nblocks:\n  - {name: g, type: "
+     "Gain}\n",
+     "m.yaml:4:23: error: identification must be absolute, relative_byte, relative_word or relative_word_aligned"},
+    {"xcp_timestamp_of_three_bytes",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {timestamp_bytes: 3}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:4:24: error: timestamp_bytes must be 1, 2 or 4"},
+    {"xcp_absolute_odts",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {odts: 253}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:4:13: error: odts must be at most 252 with absolute identification (an absolute ODT number is one byte "
+     "below 0xFC; relative identification numbers ODTs per list)"},
+    {"xcp_small_queue",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {max_dto: 1000, queue_bytes: 1000}\nblocks:\n  - {name: g, "
+     "type: Gain}\n",
+     "m.yaml:4:35: error: queue_bytes must hold a DAQ packet and a response: at least 2004"},
+    {"xcp_small_download",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nxcp: {download_bytes: 8}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:4:23: error: download_bytes must hold one DOWNLOAD's data: at least max_cto - 2 = 246"},
     {"measurable_word",
      "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {measurable: often}\nblocks:\n  - "
      "{name: g, type: Gain}\n",

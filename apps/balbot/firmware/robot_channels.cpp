@@ -21,35 +21,14 @@ namespace app_channel = duet::app_channel;
 
 constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
 
-// XCP: the model's calibration segment, its signals and the executive's account (balbot_xcp.hpp, at the A2L's
-// addresses), an event per task.
-constexpr std::size_t max_cto = 248;
-constexpr std::size_t max_dto = 248;
-const std::array<xcp::CalibrationSegment, 1> segments{balbot::xcp::calibration_segment()};
-const std::array<xcp::MemoryRegion, 2> regions{balbot::xcp::signals_region(), balbot::xcp::executive_region()};
-std::array<xcp::DaqList, 8> daq_lists{};
-std::array<xcp::Odt, 64> odts{};
-std::array<xcp::OdtEntry, 512> odt_entries{};
-std::array<std::uint8_t, 16 * 1024> xcp_queue_storage{};
-std::array<std::uint8_t, 256> download_buffer{};
-xcp::TransmitQueue xcp_queue{xcp_queue_storage, interrupt_lock};
-const xcp::SlaveConfiguration xcp_configuration{.memory = xcp::MemoryMap{regions},
-                                                .segments = segments,
-                                                .max_cto = max_cto,
-                                                .max_dto = max_dto,
-                                                .identification = "balbot",
-                                                .write_atomically = cortex_m::copy_with_interrupts_masked,
-                                                .download_buffer = download_buffer,
-                                                .events = balbot::xcp::events,
-                                                .daq = {daq_lists, odts, odt_entries},
-                                                .queue = &xcp_queue,
-                                                .timestamp = microseconds,  // the A2L's unit
-                                                .timestamp_unit = 3,        // 1 us
-                                                .timestamp_ticks = 1};
-xcp::Slave slave{xcp_configuration};
-std::array<std::uint8_t, xcp::ethernet_framing.frame_size(max_cto)> xcp_decoder_buffer{};
-std::array<std::uint8_t, max_dto> xcp_packet_buffer{};
-xcp::StreamTransport transport{slave, xcp_queue, xcp::ethernet_framing, xcp_decoder_buffer, max_cto, xcp_packet_buffer};
+// XCP: the model's slave as its generated code sizes it (balbot_xcp.hpp, the A2L's limits and addresses).
+balbot::xcp::Slave slave{{.timestamp = microseconds,  // the A2L's unit
+                          .write_atomically = cortex_m::copy_with_interrupts_masked,
+                          .queue_lock = interrupt_lock}};
+std::array<std::uint8_t, xcp::ethernet_framing.frame_size(balbot::xcp::max_cto)> xcp_decoder_buffer{};
+std::array<std::uint8_t, balbot::xcp::max_dto> xcp_packet_buffer{};
+xcp::StreamTransport transport{slave.protocol(),   slave.queue(),        xcp::ethernet_framing,
+                               xcp_decoder_buffer, balbot::xcp::max_cto, xcp_packet_buffer};
 
 // The application channel: what the thesis' Linux application shows (theta, battery voltage, distance) and sets
 // (the PID's P, I, D), as the model sends and takes them.
@@ -107,8 +86,8 @@ void tell_the_model_of_new_gains() {
 }
 
 void on_task_finished(std::size_t task) {
-  slave.on_event(static_cast<std::uint16_t>(task));
-  if (xcp_queue.free_bytes() != xcp_queue.capacity()) kick_xcp();
+  slave.protocol().on_event(static_cast<std::uint16_t>(task));
+  if (slave.queue().free_bytes() != slave.queue().capacity()) kick_xcp();
 }
 
 void publish_executive(const app_channel::ExecutiveReport& report) {
@@ -133,7 +112,7 @@ void receive_from_linux(std::span<double> message_bytes) {
 
 ChannelLosses channel_losses() {
   return {.xcp_responses = transport.responses_dropped(),
-          .daq_overloads = slave.overloads(),
+          .daq_overloads = slave.protocol().overloads(),
           .xcp_garbage_bytes = static_cast<std::uint32_t>(transport.dropped_bytes()),
           .telemetry = endpoint.samples_dropped(),
           .executive_reports = endpoint.reports_dropped(),

@@ -117,6 +117,22 @@ struct Block {
   std::optional<UserCode> code;  // a Code block's
 };
 
+// The XCP slave the generated code carries: its packet limits and the sizes of its DAQ tables, transmit queue and
+// download buffer. The generator builds the firmware's slave and the A2L from these same numbers (docs/XCP.md, "One
+// description"); a model's `xcp:` section changes the defaults.
+struct XcpSettings {
+  std::uint32_t max_cto = 248;  // command and response packets, bytes
+  std::uint32_t max_dto = 248;  // DAQ packets, bytes
+  std::uint32_t daq_lists = 8;
+  std::uint32_t odts = 64;  // in all lists together
+  std::uint32_t odt_entries = 512;
+  std::uint32_t queue_bytes = 16 * 1024;    // responses, events and DAQ packets waiting for the line
+  std::uint32_t download_bytes = 256;       // the longest DOWNLOAD sequence, applied at once
+  std::string identification = "absolute";  // how DAQ packets name their ODT (docs/XCP.md)
+  std::uint32_t timestamp_bytes = 4;
+  Location location;  // of the section, when the model has one
+};
+
 struct Model {
   std::string file;
   int version = 0;
@@ -128,6 +144,7 @@ struct Model {
   std::vector<Parameter> parameters;
   std::vector<SignalDeclaration> signals;
   std::vector<Block> blocks;
+  XcpSettings xcp;
 };
 
 }  // namespace duet::model
