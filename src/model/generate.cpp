@@ -10,6 +10,7 @@
 #include "duet/model/data_type.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/model/task_set_file.hpp"
+#include "duet/support/content_hash.hpp"
 #include "duet/version.hpp"
 #include "duet/xcp/host/a2l.hpp"
 #include "generator.hpp"
@@ -297,7 +298,13 @@ class FileWriter {
     text += "namespace " + name_ + "::xcp {\n\n";
     text += "inline constexpr std::uint32_t parameters_address = " + std::to_string(parameters_xcp_address) + ";\n";
     text += "inline constexpr std::uint32_t signals_address = " + std::to_string(signals_xcp_address) + ";\n";
-    text += "inline constexpr std::uint32_t executive_address = " + std::to_string(executive_xcp_address) + ";\n\n";
+    text += "inline constexpr std::uint32_t executive_address = " + std::to_string(executive_xcp_address) + ";\n";
+    text += "inline constexpr std::uint32_t epk_address = " + std::to_string(epk_xcp_address) + ";\n\n";
+    text +=
+        "// The EPK: this generation of the model, as the A2L's MOD_PAR says it; a master uploads it from "
+        "epk_address\n";
+    text += "// (or asks GET_ID) to know that it talks to the firmware the A2L describes.\n";
+    text += "inline constexpr char epk[] = " + quoted(epk()) + ";\n\n";
     text += "// The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).\n";
     text += "inline constexpr std::uint8_t max_cto = " + std::to_string(limits.max_cto) + ";\n";
     text += "inline constexpr std::uint16_t max_dto = " + std::to_string(limits.max_dto) + ";\n";
@@ -325,6 +332,10 @@ class FileWriter {
     text += "  return {.name = \"executive\",\n          .address = executive_address,\n";
     text += "          .size = sizeof(ExecutiveAccount),\n";
     text += "          .memory = reinterpret_cast<std::uint8_t*>(&executive_account)};\n}\n\n";
+    text += "inline duet::xcp::MemoryRegion epk_region() {\n";
+    text += "  return {.name = \"epk\",\n          .address = epk_address,\n          .size = sizeof(epk) - 1,\n";
+    text += "          // A read-only region: the slave never writes through the pointer.\n";
+    text += "          .memory = reinterpret_cast<std::uint8_t*>(const_cast<char*>(epk))};\n}\n\n";
     text += "inline constexpr duet::xcp::EventChannel events[] = {\n";
     for (const ProgramTask& task : program_.tasks) {
       const auto [cycle, unit] = event_cycle(program_, task);
@@ -378,8 +389,8 @@ class FileWriter {
         " private:\n";
     text += "  std::array<duet::xcp::CalibrationSegment, " + std::string{calibration ? "1" : "0"} + "> segments_{" +
             (calibration ? "calibration_segment()" : "") + "};\n";
-    text += "  std::array<duet::xcp::MemoryRegion, " + std::string{measurement ? "2" : "1"} + "> regions_{" +
-            (measurement ? "signals_region(), " : "") + "executive_region()};\n";
+    text += "  std::array<duet::xcp::MemoryRegion, " + std::string{measurement ? "3" : "2"} + "> regions_{" +
+            (measurement ? "signals_region(), " : "") + "executive_region(), epk_region()};\n";
     text +=
         "  std::array<duet::xcp::DaqList, daq_lists> daq_lists_{};\n"
         "  std::array<duet::xcp::Odt, odts> odts_{};\n"
@@ -393,7 +404,18 @@ class FileWriter {
     return text;
   }
 
-  std::string a2l() const {
+  std::string a2l() const { return banner("/*", source_, " */") + xcp::host::write_a2l(a2l_description()); }
+
+  // The EPK names this generation of the model: what a master compares to know that the firmware it talks to is the
+  // one the A2L describes. It is the model's name and a hash of everything the A2L says but the EPK itself.
+  std::string epk() const { return name_ + " " + content_hash(xcp::host::write_a2l(a2l_without_epk())); }
+
+  xcp::host::A2lDescription a2l_description() const {
+    xcp::host::A2lDescription description = a2l_without_epk();
+    return description;
+  }
+
+  xcp::host::A2lDescription a2l_without_epk() const {
     using xcp::host::A2lDescription;
     A2lDescription description;
     description.module = name_;
@@ -441,7 +463,7 @@ class FileWriter {
       const auto [cycle, unit] = event_cycle(program_, task);
       description.events.push_back({task.name, static_cast<std::uint16_t>(index), cycle, unit, 0});
     }
-    return banner("/*", source_, " */") + xcp::host::write_a2l(description);
+    return description;
   }
 
   // The executive's account (duet/rt/executive_account.hpp) as measurements: executive.busy_ppm, ...,

@@ -11,11 +11,11 @@
 #include "duet/model/task_set_file.hpp"
 #include "duet/monitor/monitor_target.hpp"
 #include "duet/plant/plant.hpp"
-#include "duet/studio/file_version.hpp"
 #include "duet/studio/generation.hpp"
 #include "duet/studio/library.hpp"
 #include "duet/studio/model_view.hpp"
 #include "duet/studio/simulation_job.hpp"
+#include "duet/support/content_hash.hpp"
 #include "duet/support/text_file.hpp"
 #include "duet/xcp/host/a2l.hpp"
 
@@ -58,7 +58,7 @@ class Studio::Impl {
   Status read_model() {
     auto text = read_text_file(options_.model.string());
     if (!text) return Failure{text.error()};
-    disk_version_ = version_of(text.value());
+    disk_version_ = content_hash(text.value());
     disk_text_ = std::move(text).value();
     return done();
   }
@@ -171,7 +171,7 @@ class Studio::Impl {
     const auto base = string_member(request, "base");
     if (!text || !base) return reply_error(client, "save", R"(save needs "text" and "base" (the version edited))");
     auto on_disk = read_text_file(options_.model.string());
-    const std::string disk_version = on_disk ? version_of(on_disk.value()) : std::string{};
+    const std::string disk_version = on_disk ? content_hash(on_disk.value()) : std::string{};
     if (!on_disk || disk_version != *base) {
       client.send(dashboard::message({{"type", "save_refused"},
                                       {"reason", on_disk ? "the file changed on disk since it was opened"
@@ -190,7 +190,7 @@ class Studio::Impl {
     fs::rename(temporary, options_.model, error);
     if (error) return reply_error(client, "save", "cannot replace " + options_.model.string() + ": " + error.message());
     disk_text_ = *text;
-    disk_version_ = version_of(disk_text_);
+    disk_version_ = content_hash(disk_text_);
     client.send(dashboard::message({{"type", "saved"}, {"version", disk_version_}}), dashboard::Delivery::always);
     return true;
   }
@@ -202,7 +202,7 @@ class Studio::Impl {
       if (error) return;
       auto text = read_text_file(options_.model.string());
       if (text) {
-        const std::string version = version_of(text.value());
+        const std::string version = content_hash(text.value());
         if (version != disk_version_ && version != announced_version_) {
           announced_version_ = version;
           dashboard_->broadcast({{"type", "file_changed"}, {"version", version}}, dashboard::Delivery::always);

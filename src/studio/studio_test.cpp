@@ -9,7 +9,7 @@
 #include <fstream>
 #include <thread>
 
-#include "duet/studio/file_version.hpp"
+#include "duet/support/content_hash.hpp"
 #include "duet/support/text_file.hpp"
 #include "websocket_client.hpp"
 
@@ -61,7 +61,7 @@ TEST_F(StudioTest, WelcomesWithTheFileTheLibraryAndTheCheckedModel) {
   ASSERT_TRUE(welcome);
   EXPECT_EQ((*welcome)["file"], "pid_demo.yaml");
   EXPECT_EQ((*welcome)["text"], original);
-  EXPECT_EQ((*welcome)["version"], version_of(original));
+  EXPECT_EQ((*welcome)["version"], content_hash(original));
   EXPECT_GT((*welcome)["library"].size(), 40U);
   EXPECT_EQ((*welcome)["defaults"]["plant"], "none");
   const auto model_message = client.next("model");
@@ -92,10 +92,10 @@ TEST_F(StudioTest, SavesOnlyOverTheVersionItWasEditedFrom) {
   ASSERT_TRUE(refused);
   EXPECT_EQ(read_text_file(model.string()).value(), original);
 
-  client.send({{"type", "save"}, {"text", edited}, {"base", version_of(original)}});
+  client.send({{"type", "save"}, {"text", edited}, {"base", content_hash(original)}});
   const auto saved = client.next("saved");
   ASSERT_TRUE(saved);
-  EXPECT_EQ((*saved)["version"], version_of(edited));
+  EXPECT_EQ((*saved)["version"], content_hash(edited));
   EXPECT_EQ(read_text_file(model.string()).value(), edited);
 }
 
@@ -110,7 +110,7 @@ TEST_F(StudioTest, TellsThePageWhenSomeoneElseChangedTheFile) {
   ASSERT_TRUE(file);
   EXPECT_EQ((*file)["text"], original + "# from another editor\n");
   // Saving over the version the page had would lose the other editor's change: refused.
-  client.send({{"type", "save"}, {"text", original}, {"base", version_of(original)}});
+  client.send({{"type", "save"}, {"text", original}, {"base", content_hash(original)}});
   EXPECT_TRUE(client.next("save_refused"));
 }
 

@@ -20,6 +20,11 @@ namespace block_tour::xcp {
 inline constexpr std::uint32_t parameters_address = 65536;
 inline constexpr std::uint32_t signals_address = 131072;
 inline constexpr std::uint32_t executive_address = 196608;
+inline constexpr std::uint32_t epk_address = 262144;
+
+// The EPK: this generation of the model, as the A2L's MOD_PAR says it; a master uploads it from epk_address
+// (or asks GET_ID) to know that it talks to the firmware the A2L describes.
+inline constexpr char epk[] = "block_tour 1291f28d1b19711c";
 
 // The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).
 inline constexpr std::uint8_t max_cto = 248;
@@ -55,6 +60,14 @@ inline duet::xcp::MemoryRegion executive_region() {
           .address = executive_address,
           .size = sizeof(ExecutiveAccount),
           .memory = reinterpret_cast<std::uint8_t*>(&executive_account)};
+}
+
+inline duet::xcp::MemoryRegion epk_region() {
+  return {.name = "epk",
+          .address = epk_address,
+          .size = sizeof(epk) - 1,
+          // A read-only region: the slave never writes through the pointer.
+          .memory = reinterpret_cast<std::uint8_t*>(const_cast<char*>(epk))};
 }
 
 inline constexpr duet::xcp::EventChannel events[] = {
@@ -98,7 +111,7 @@ class Slave {
 
  private:
   std::array<duet::xcp::CalibrationSegment, 1> segments_{calibration_segment()};
-  std::array<duet::xcp::MemoryRegion, 2> regions_{signals_region(), executive_region()};
+  std::array<duet::xcp::MemoryRegion, 3> regions_{signals_region(), executive_region(), epk_region()};
   std::array<duet::xcp::DaqList, daq_lists> daq_lists_{};
   std::array<duet::xcp::Odt, odts> odts_{};
   std::array<duet::xcp::OdtEntry, odt_entries> odt_entries_{};

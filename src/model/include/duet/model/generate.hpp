@@ -30,6 +30,7 @@ struct GeneratedFile {
 inline constexpr std::uint32_t parameters_xcp_address = 0x0001'0000;
 inline constexpr std::uint32_t signals_xcp_address = 0x0002'0000;
 inline constexpr std::uint32_t executive_xcp_address = 0x0003'0000;
+inline constexpr std::uint32_t epk_xcp_address = 0x0004'0000;  // the EPK string, read-only
 
 // The A2L's memory segment of the executive's account.
 inline constexpr std::string_view executive_segment = "executive";

@@ -1,11 +1,11 @@
-#include "duet/studio/file_version.hpp"
+#include "duet/support/content_hash.hpp"
 
 #include <cstdint>
 #include <cstdio>
 
-namespace duet::studio {
+namespace duet {
 
-std::string version_of(std::string_view bytes) {
+std::string content_hash(std::string_view bytes) {
   std::uint64_t hash = 14695981039346656037ULL;  // FNV-1a's offset basis and prime (64 bits)
   for (const char byte : bytes) {
     hash ^= static_cast<unsigned char>(byte);
@@ -16,4 +16,4 @@ std::string version_of(std::string_view bytes) {
   return text;
 }
 
-}  // namespace duet::studio
+}  // namespace duet
