@@ -12,6 +12,9 @@ namespace {
 
 // An /include inside an /include ...: deeper than this is a loop, or a mistake.
 constexpr std::size_t max_include_depth = 16;
+// ASAP2 nests a handful of blocks (PROJECT, MODULE, CHARACTERISTIC, AXIS_DESCR, ...); far deeper is no A2L, and the
+// tree's users recurse.
+constexpr std::size_t max_block_depth = 64;
 
 bool is_space(char character) {
   return character == ' ' || character == '\t' || character == '\r' || character == '\n' || character == '\f';
@@ -136,6 +139,10 @@ std::variant<Block, SyntaxError> build_tree(const std::vector<Token>& tokens, co
     }
     const Token& keyword = tokens[++index];
     if (token.kind == Token::Kind::begin) {
+      if (open.size() > max_block_depth) {
+        return error(token.place,
+                     "/begin " + keyword.value + ": blocks nest deeper than " + std::to_string(max_block_depth));
+      }
       open.back()->children.push_back(Block{keyword.value, {}, {}, token.place});
       open.push_back(&open.back()->children.back());
       continue;

@@ -174,6 +174,9 @@ TEST(A2l, ErrorsNameTheLineTheColumnAndTheProblem) {
       "/end MODULE /end PROJECT\n";
   EXPECT_EQ(read_a2l(bad_type, "x.a2l").error(), "x.a2l:2:25: 'UCHAR' is not an A2L data type");
   EXPECT_EQ(read_a2l("/begin PROJECT p \"open", "x.a2l").error(), "x.a2l:1:18: a text that never ends");
+  std::string deep;
+  for (int level = 0; level < 1000; ++level) deep += "/begin X ";
+  EXPECT_EQ(read_a2l(deep, "x.a2l").error(), "x.a2l:1:577: /begin X: blocks nest deeper than 64");
 }
 
 }  // namespace

@@ -56,8 +56,8 @@ struct Variable {
   std::string description;
   DataType type = DataType::float32;
   std::uint8_t extension = 0;
-  std::uint32_t address = 0;
-  std::uint32_t count = 1;
+  std::uint32_t address = 0;  // of the first value (past the axis points a CURVE's or MAP's record may start with)
+  std::uint32_t count = 1;    // values in all
   std::string unit;
   double minimum = 0.0;
   double maximum = 0.0;
