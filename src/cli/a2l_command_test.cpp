@@ -7,16 +7,16 @@
 namespace duet::cli {
 namespace {
 
-const std::string testing_folder = std::string{DUET_SOURCE_DIR} + "/src/xcp/host/testing";
+std::string testing_folder() { return std::string{DUET_SOURCE_DIR} + "/src/xcp/host/testing"; }
 
 TEST(A2lCommand, AValidFilePassesSilently) {
-  const Outcome outcome = run({"a2l", "check", testing_folder + "/engine.a2l"});
+  const Outcome outcome = run({"a2l", "check", testing_folder() + "/engine.a2l"});
   EXPECT_EQ(outcome.exit_code, ExitCode::success);
   EXPECT_EQ(outcome.out, "");
 }
 
 TEST(A2lCommand, ProblemsAreLinesNamingThePlaceAndFailTheCommand) {
-  const Outcome outcome = run({"a2l", "check", testing_folder + "/engine.a2l", "/nonexistent.a2l"});
+  const Outcome outcome = run({"a2l", "check", testing_folder() + "/engine.a2l", "/nonexistent.a2l"});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
   EXPECT_EQ(outcome.out, "/nonexistent.a2l: error: cannot open\n");
 }

@@ -111,11 +111,8 @@ class Checker {
     if (version == nullptr) {
       error(tree_.root.values.empty() ? Place{} : tree_.root.values.front().place, "ASAP2_VERSION is missing");
     }
-    const Block* project = nullptr;
-    for (const Block& block : tree_.root.children) {
-      check_child(block, "", tree_.root);
-      if (block.keyword == "PROJECT") project = &block;
-    }
+    check_children(tree_.root, "");
+    const Block* project = child(tree_.root, "PROJECT");
     if (project == nullptr) {
       error(Place{}, "no /begin PROJECT");
     } else {
@@ -144,39 +141,36 @@ class Checker {
 
   // ---- The shape of each block, from the keyword table.
 
-  static std::string parent_key(const Block& block) {
-    if (block.keyword == "IF_DATA" && !block.values.empty()) return "IF_DATA " + block.values[0].value;
-    return block.keyword;
-  }
-
-  void check_child(const Block& block, const std::string& parent, const Block& parent_block) {
-    bool known = false;
-    const BlockRule* rule = a2l_rules::rule_for(block.keyword, parent, known);
-    const std::string where = parent.empty() ? "the file's top" : parent;
-    if (rule == nullptr) {
-      if (known) {
-        error(block.place, block.keyword + " is not allowed in " + where);
-      } else {
-        warning(block.place, "unknown keyword " + block.keyword + " in " + where + " (not checked)");
+  // The blocks inside `owner`, whose keyword (IF_DATA: with the interface's name) is `key`.
+  void check_children(const Block& owner, const std::string& key) {
+    const std::string where = key.empty() ? "the file's top" : key;
+    for (const Block& block : owner.children) {
+      bool known = false;
+      const BlockRule* rule = a2l_rules::rule_for(block.keyword, key, known);
+      if (rule == nullptr) {
+        if (known) {
+          error(block.place, block.keyword + " is not allowed in " + where);
+        } else {
+          warning(block.place, "unknown keyword " + block.keyword + " in " + where + " (not checked)");
+        }
+        continue;
       }
-      return;
-    }
-    if (rule->once) {
-      const auto first = std::find_if(parent_block.children.begin(), parent_block.children.end(),
-                                      [&block](const Block& other) { return other.keyword == block.keyword; });
-      if (&*first != &block) {
-        error(block.place, block.keyword + " appears twice in " + where + " (first at line " +
-                               std::to_string(first->place.line) + ")");
+      if (rule->once) {
+        const auto first = std::find_if(owner.children.begin(), owner.children.end(),
+                                        [&block](const Block& other) { return other.keyword == block.keyword; });
+        if (&*first != &block) {
+          error(block.place, block.keyword + " appears twice in " + where + " (first at line " +
+                                 std::to_string(first->place.line) + ")");
+        }
       }
+      if (rule->unchecked) continue;
+      if (block.keyword == "IF_DATA") {
+        check_if_data(block);
+        continue;
+      }
+      check_values(block, *rule);
+      check_children(block, block.keyword);
     }
-    if (rule->unchecked) return;
-    if (block.keyword == "IF_DATA") {
-      check_if_data(block);
-      return;
-    }
-    check_values(block, *rule);
-    const std::string key = parent_key(block);
-    for (const Block& inner : block.children) check_child(inner, key, block);
   }
 
   // IF_DATA XCP (and XCPplus, with its version) is checked; another tool's IF_DATA is its own business.
@@ -195,7 +189,7 @@ class Checker {
       error(block.values[expected].place, "IF_DATA " + name + ": unexpected '" + block.values[expected].value + "'");
     }
     if (name == "XCPplus" && block.values.size() < 2) error(block.place, "IF_DATA XCPplus: its version is missing");
-    for (const Block& inner : block.children) check_child(inner, "IF_DATA " + name, block);
+    check_children(block, "IF_DATA " + name);
   }
 
   // Whether a token could be the first value of a group of this type (to know where repetitions end).

@@ -10,12 +10,12 @@
 namespace duet::xcp::host {
 namespace {
 
-const std::string engine_file = std::string{DUET_A2L_TESTING} + "/engine.a2l";
+std::string engine_file() { return std::string{DUET_A2L_TESTING} + "/engine.a2l"; }
 
 class EngineA2l : public testing::Test {
  protected:
   void SetUp() override {
-    auto read = read_a2l_file(engine_file);
+    auto read = read_a2l_file(engine_file());
     ASSERT_TRUE(read.ok()) << read.error();
     a2l = std::move(read).value();
   }
@@ -94,7 +94,7 @@ TEST_F(EngineA2l, ReadsTheXcpInterface) {
 }
 
 TEST_F(EngineA2l, SaysWhatItLeavesOut) {
-  const std::string& file = engine_file;
+  const std::string file = engine_file();
   EXPECT_EQ(a2l.warnings,
             (std::vector<std::string>{
                 file + ":32:18: big-endian values (MSB_FIRST) are read as little-endian",
@@ -106,7 +106,7 @@ TEST_F(EngineA2l, SaysWhatItLeavesOut) {
 }
 
 std::string engine_with(const std::string& from, const std::string& to) {
-  auto text = read_text_file(engine_file);
+  auto text = read_text_file(engine_file());
   EXPECT_TRUE(text.ok());
   std::string changed = text.value();
   changed.replace(changed.find(from), from.size(), to);
@@ -114,9 +114,9 @@ std::string engine_with(const std::string& from, const std::string& to) {
 }
 
 TEST(A2lReader, AnIncludeItCannotFindIsAnErrorNamingTheFile) {
-  const auto read = read_a2l(engine_with("engine_units.a2l", "units.a2l"), engine_file);
+  const auto read = read_a2l(engine_with("engine_units.a2l", "units.a2l"), engine_file());
   EXPECT_EQ(read.error(),
-            engine_file + ":11:5: /include \"units.a2l\": cannot open " + DUET_A2L_TESTING + "/units.a2l");
+            engine_file() + ":11:5: /include \"units.a2l\": cannot open " + DUET_A2L_TESTING + "/units.a2l");
   const auto looping = read_a2l_file(std::string{DUET_A2L_TESTING} + "/includes_itself.a2l");
   EXPECT_NE(looping.error().find("includes nest deeper than 16"), std::string::npos) << looping.error();
 }
@@ -126,7 +126,7 @@ TEST(A2lReader, ReportsArraysOfStructuresVirtualMeasurementsAndUnknownBlocks) {
                                  "/begin INSTANCE front_left \"the front left wheel\" wheel 0x20001010 MATRIX_DIM 4");
   text.replace(text.find("BIT_MASK 0x0F"), 13, "/begin VIRTUAL coolant gear /end VIRTUAL");
   text.replace(text.find("/end MODULE"), 11, "/begin BLOB image \"\" 0x20000800 16 /end BLOB /end MODULE");
-  const auto read = read_a2l(text, engine_file);
+  const auto read = read_a2l(text, engine_file());
   ASSERT_TRUE(read.ok()) << read.error();
   const std::vector<std::string>& warnings = read.value().warnings;
   auto warned = [&warnings](const std::string& what) {

@@ -171,7 +171,6 @@ struct Spec {
 #define DUET_A2L_XCP_PARENTS \
   "IF_DATA XCP|IF_DATA XCPplus|XCP_ON_TCP_IP|XCP_ON_UDP_IP|XCP_ON_CAN|XCP_ON_SxI|XCP_ON_USB|XCP_ON_FLX"
 
-// NOLINTBEGIN(cppcoreguidelines-macro-usage): the macros above only join string literals
 const Spec specs[] = {
     {"PROJECT", "", "Name:ident LongIdentifier:string", "", true},
     {"HEADER", "PROJECT", "Comment:string", "VERSION Version:string; PROJECT_NO Number:ident", true},
@@ -335,7 +334,6 @@ const Spec specs[] = {
     {"XCP_ON_FLX", "IF_DATA XCP|IF_DATA XCPplus", "Version:uint", "", false, true},
     {"DAQ_EVENT", "IF_DATA XCP|IF_DATA XCPplus", "", "", true, true},
 };
-// NOLINTEND(cppcoreguidelines-macro-usage)
 
 Type parse_type(std::string_view text) {
   Type type;
