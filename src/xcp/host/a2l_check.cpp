@@ -74,6 +74,23 @@ bool is_format(std::string_view text) {
          text.find('.', point + 1) == std::string_view::npos;
 }
 
+// The values a data type holds (the largest finite ones for floats).
+std::pair<double, double> range_of_datatype(std::string_view type) {
+  static const std::map<std::string_view, std::pair<double, double>> ranges{
+      {"UBYTE", {0, 255}},
+      {"SBYTE", {-128, 127}},
+      {"UWORD", {0, 65535}},
+      {"SWORD", {-32768, 32767}},
+      {"ULONG", {0, 4294967295.0}},
+      {"SLONG", {-2147483648.0, 2147483647.0}},
+      {"A_UINT64", {0, 18446744073709551615.0}},
+      {"A_INT64", {-9223372036854775808.0, 9223372036854775807.0}},
+      {"FLOAT16_IEEE", {-65504, 65504}},
+      {"FLOAT32_IEEE", {-3.4028234663852886e38, 3.4028234663852886e38}}};
+  const auto found = ranges.find(type);
+  return found != ranges.end() ? found->second : std::pair{-1.7976931348623157e308, 1.7976931348623157e308};
+}
+
 std::size_t size_of_datatype(std::string_view type) {
   if (type == "UBYTE" || type == "SBYTE") return 1;
   if (type == "UWORD" || type == "SWORD" || type == "FLOAT16_IEEE") return 2;
@@ -427,6 +444,14 @@ class Checker {
     return index < block.values.size() ? &block.values[index] : nullptr;
   }
 
+  // The value `offset` places after `keyword` (FNC_VALUES 1 UWORD: the data type is 2 after it).
+  static const Token* value_after(const Block& block, std::string_view keyword, std::size_t offset) {
+    for (std::size_t index = 0; index + offset < block.values.size(); ++index) {
+      if (block.values[index].value == keyword) return &block.values[index + offset];
+    }
+    return nullptr;
+  }
+
   void check_format(const Block& block, const Token* format) {
     if (format != nullptr && format->kind == Token::Kind::text && !is_format(format->value)) {
       error(format->place, block.keyword + ": the format '" + format->value +
@@ -439,16 +464,20 @@ class Checker {
     const std::vector<std::string_view> conversion{"COMPU_METHOD"};
     const std::vector<std::string_view> layout{"RECORD_LAYOUT"};
     const std::vector<std::string_view> measurement{"MEASUREMENT"};
-    const std::vector<std::string_view> parameter{"CHARACTERISTIC", "AXIS_PTS"};
     check_format(block, after(block, "FORMAT"));
     if (const Token* segment = after(block, "REF_MEMORY_SEGMENT")) expect(block, segment, {"MEMORY_SEGMENT"});
     if (keyword == "MEASUREMENT" || keyword == "TYPEDEF_MEASUREMENT") {
       expect(block, value_at(block, 3), conversion, "NO_COMPU_METHOD");
+      check_limits(block, value_at(block, 2), value_at(block, 3), 6);
     } else if (keyword == "CHARACTERISTIC" || keyword == "TYPEDEF_CHARACTERISTIC") {
       const std::size_t shift = keyword == "CHARACTERISTIC" ? 0 : 1;
       expect(block, value_at(block, 4 - shift), layout);
       expect(block, value_at(block, 6 - shift), conversion, "NO_COMPU_METHOD");
       check_characteristic_shape(block);
+      const Definition* record =
+          block.values.size() > 4 - shift ? find("RECORD_LAYOUT", block.values[4 - shift].value) : nullptr;
+      if (record != nullptr)
+        check_limits(block, value_after(*record->block, "FNC_VALUES", 2), value_at(block, 6 - shift), 7 - shift);
       for (const Block& axis : block.children) {
         if (axis.keyword != "AXIS_DESCR") continue;
         expect(axis, value_at(axis, 1), measurement, "NO_INPUT_QUANTITY");
@@ -479,6 +508,31 @@ class Checker {
       }
     } else if (keyword == "GROUP" || keyword == "FUNCTION") {
       check_members(block);
+    }
+  }
+
+  // LowerLimit <= UpperLimit (at `lower` and the value after it), and for a value read as it is stored
+  // (NO_COMPU_METHOD, IDENTICAL), both within what its data type holds.
+  void check_limits(const Block& block, const Token* type, const Token* conversion, std::size_t lower) {
+    const Token* low = value_at(block, lower);
+    const Token* high = value_at(block, lower + 1);
+    const auto minimum = low != nullptr ? parse_number(low->value) : std::nullopt;
+    const auto maximum = high != nullptr ? parse_number(high->value) : std::nullopt;
+    if (!minimum || !maximum) return;
+    if (*minimum > *maximum) {
+      error(low->place, owner(block) + ": LowerLimit " + low->value + " is above UpperLimit " + high->value);
+      return;
+    }
+    if (type == nullptr || conversion == nullptr) return;
+    const Definition* method = find("COMPU_METHOD", conversion->value);
+    const bool identical =
+        conversion->value == "NO_COMPU_METHOD" ||
+        (method != nullptr && method->block->values.size() > 2 && method->block->values[2].value == "IDENTICAL");
+    const auto [smallest, largest] = range_of_datatype(type->value);
+    if (identical && (*minimum < smallest || *maximum > largest)) {
+      error(*minimum < smallest ? low->place : high->place, owner(block) + ": the limits " + low->value + " to " +
+                                                                high->value + " are outside what " + type->value +
+                                                                " holds");
     }
   }
 

@@ -132,6 +132,10 @@ std::vector<Broken> broken_rules() {
       {"value_missing", "values_sword 0 NO_COMPU_METHOD 0 100\n      /begin AXIS_DESCR FIX_AXIS",
        "values_sword 0 NO_COMPU_METHOD 0\n      /begin AXIS_DESCR FIX_AXIS",
        "128:5: error: CHARACTERISTIC: UpperLimit (float) is missing"},
+      {"limits_within_the_type", "UBYTE NO_COMPU_METHOD 0 0 0 255", "UBYTE NO_COMPU_METHOD 0 0 0 256",
+       "98:72: error: MEASUREMENT 'flags': the limits 0 to 256 are outside what UBYTE holds"},
+      {"limits_in_order", "scalar_uword 0 rpm 500 1500", "scalar_uword 0 rpm 1500 500",
+       "106:91: error: CHARACTERISTIC 'idle_speed': LowerLimit 1500 is above UpperLimit 500"},
       {"number", "-40 87.5", "-40 hot", "92:82: error: MEASUREMENT: UpperLimit: 'hot' is not a number"},
       {"block_in_its_parent", "/begin PAG 1 FREEZE_SUPPORTED /end PAG",
        "/begin PAG 1 /begin PAGE 0 ECU_ACCESS_DONT_CARE XCP_READ_ACCESS_DONT_CARE XCP_WRITE_ACCESS_DONT_CARE /end PAGE "
