@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "a2l_command.hpp"
 #include "design_command.hpp"
 #include "gen_command.hpp"
 #include "model_command.hpp"
@@ -30,6 +31,7 @@ constexpr Subcommand table[] = {
     {"pil", "Processor in the loop: firmware on QEMU's emulated Cortex-M4 against a simulated plant, with the bridge",
      define_pil_command},
     {"studio", "See, edit, simulate and watch a model in the browser", define_studio_command},
+    {"a2l", "Check A2L files against ASAP2 1.71 and XCP's IF_DATA", define_a2l_command},
 };
 
 }  // namespace
