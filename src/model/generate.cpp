@@ -13,6 +13,7 @@
 #include "duet/support/content_hash.hpp"
 #include "duet/version.hpp"
 #include "duet/xcp/host/a2l.hpp"
+#include "duet/xcp/slave.hpp"
 #include "generator.hpp"
 #include "user_code.hpp"
 
@@ -347,6 +348,14 @@ class FileWriter {
     return text + "\n}  // namespace " + name_ + "::xcp\n";
   }
 
+  duet::xcp::IdentificationField identification() const {
+    const std::string& kind = program_.model->xcp.identification;
+    if (kind == "relative_byte") return duet::xcp::IdentificationField::relative_byte;
+    if (kind == "relative_word") return duet::xcp::IdentificationField::relative_word;
+    if (kind == "relative_word_aligned") return duet::xcp::IdentificationField::relative_word_aligned;
+    return duet::xcp::IdentificationField::absolute;
+  }
+
   // The slave with the storage the limits ask for: what the A2L promises is what the slave has.
   std::string slave_class() const {
     const bool calibration = !parameters_.empty();
@@ -412,7 +421,18 @@ class FileWriter {
 
   xcp::host::A2lDescription a2l_description() const {
     xcp::host::A2lDescription description = a2l_without_epk();
+    description.epk = epk();
+    description.epk_address = epk_xcp_address;
     return description;
+  }
+
+  // A matrix's MATRIX_DIM: rows, then columns, as the model writes its size and C lays it out (row after row, the
+  // RECORD_LAYOUT's ROW_DIR). A vector or a scalar needs none beyond its count.
+  static std::vector<std::uint32_t> matrix_dimensions(const std::vector<std::size_t>& shape) {
+    if (shape.size() < 2) return {};
+    std::vector<std::uint32_t> dimensions;
+    for (const std::size_t extent : shape) dimensions.push_back(static_cast<std::uint32_t>(extent));
+    return dimensions;
   }
 
   xcp::host::A2lDescription a2l_without_epk() const {
@@ -423,6 +443,16 @@ class FileWriter {
     description.max_cto = static_cast<std::uint8_t>(limits.max_cto);
     description.max_dto = static_cast<std::uint16_t>(limits.max_dto);
     description.max_daq_lists = static_cast<std::uint16_t>(limits.daq_lists);
+    // What the slave answers in GET_DAQ_RESOLUTION_INFO: the largest entry that fits a DAQ packet after its
+    // identification and timestamp.
+    description.max_odt_entry_size = static_cast<std::uint8_t>(std::min<std::uint32_t>(
+        0xFF, limits.max_dto - static_cast<std::uint32_t>(duet::xcp::identification_size(identification())) -
+                  limits.timestamp_bytes));
+    description.identification_field = identification();
+    description.timestamp_size = static_cast<std::uint8_t>(limits.timestamp_bytes);
+    const duet::xcp::SlaveConfiguration slave_defaults;
+    description.checksum_type = slave_defaults.checksum_type;
+    description.checksum_max_block_size = slave_defaults.max_checksum_block;
     description.description = program_.model->description.empty() ? name_ : program_.model->description;
     while (!description.description.empty() && description.description.back() == '\n') {
       description.description.pop_back();
@@ -443,6 +473,7 @@ class FileWriter {
       variable.unit = parameter.unit;
       if (parameter.minimum) variable.minimum = *parameter.minimum;
       if (parameter.maximum) variable.maximum = *parameter.maximum;
+      variable.dimensions = matrix_dimensions(parameter.value.shape);
       description.characteristics.push_back(variable);
     }
     for (const Field& field : signals_) {
@@ -454,6 +485,7 @@ class FileWriter {
       variable.name = signal->name;
       std::replace(variable.name.begin(), variable.name.end(), '/', '.');
       variable.unit = signal->unit;
+      variable.dimensions = matrix_dimensions(signal->type.shape);
       variable.description = signal->description;
       description.measurements.push_back(variable);
     }

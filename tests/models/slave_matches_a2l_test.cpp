@@ -125,16 +125,15 @@ TEST_P(SlaveMatchesA2l, DaqProcessor) {
   EXPECT_EQ((info[1] & 0x10U) != 0, a2l_says("TIMESTAMP_SUPPORTED"));
   EXPECT_EQ(info[1] >> 6U, 2U);  // overload by event ...
   EXPECT_TRUE(a2l_says("OVERLOAD_INDICATION_EVENT"));
-  EXPECT_EQ(info[7] >> 6U, 0U);  // absolute identification ...
-  EXPECT_TRUE(a2l_says("IDENTIFICATION_FIELD_TYPE_ABSOLUTE"));
+  EXPECT_EQ(info[7] >> 6U, static_cast<unsigned>(a2l.identification_field));
 }
 
 TEST_P(SlaveMatchesA2l, DaqResolution) {
   const Bytes info = positive({0xD9});
   EXPECT_EQ(info[1], 1U);  // byte granularity ...
   EXPECT_TRUE(a2l_says("GRANULARITY_ODT_ENTRY_SIZE_DAQ_BYTE"));
-  EXPECT_EQ(info[5] & 0x07U, 4U);  // four-byte timestamps ...
-  EXPECT_TRUE(a2l_says("SIZE_DWORD"));
+  EXPECT_EQ(info[2], a2l.max_odt_entry_size);
+  EXPECT_EQ(info[5] & 0x07U, a2l.timestamp_size);
   EXPECT_EQ(info[5] >> 4U, a2l.timestamp_unit);
   EXPECT_EQ(u16(info, 6), a2l.timestamp_ticks);
 }
@@ -176,6 +175,30 @@ TEST_P(SlaveMatchesA2l, SegmentsAndPages) {
     EXPECT_TRUE(a2l_says("/begin PAGE 1 ECU_ACCESS_DONT_CARE XCP_READ_ACCESS_DONT_CARE XCP_WRITE_ACCESS_NOT_ALLOWED"));
   }
   EXPECT_EQ(slave->ask({0xE8, 0x00, static_cast<std::uint8_t>(calibration.size()), 0x00, 0x00}), (Bytes{0xFE, 0x28}));
+}
+
+TEST_P(SlaveMatchesA2l, Epk) {
+  ASSERT_FALSE(a2l.epk.empty());
+  ASSERT_LT(a2l.epk.size(), 248U);
+  const std::uint32_t at = a2l.epk_address;
+  const Bytes uploaded = positive({0xF4, static_cast<std::uint8_t>(a2l.epk.size()), 0x00, 0x00,
+                                   static_cast<std::uint8_t>(at), static_cast<std::uint8_t>(at >> 8U),
+                                   static_cast<std::uint8_t>(at >> 16U), static_cast<std::uint8_t>(at >> 24U)});
+  EXPECT_EQ(std::string(uploaded.begin() + 1, uploaded.end()), a2l.epk);
+}
+
+TEST_P(SlaveMatchesA2l, Checksum) {
+  for (const xcp::host::MemoryInfo& memory : a2l.memory) {
+    if (!memory.calibration) continue;
+    const std::uint32_t at = memory.address;
+    positive({0xF6, 0x00, 0x00, memory.extension, static_cast<std::uint8_t>(at), static_cast<std::uint8_t>(at >> 8U),
+              static_cast<std::uint8_t>(at >> 16U), static_cast<std::uint8_t>(at >> 24U)});
+    const std::uint32_t size = memory.size & ~1U;  // a whole number of the largest checksum element
+    const Bytes checksum =
+        positive({0xF3, 0x00, 0x00, 0x00, static_cast<std::uint8_t>(size), static_cast<std::uint8_t>(size >> 8U),
+                  static_cast<std::uint8_t>(size >> 16U), static_cast<std::uint8_t>(size >> 24U)});
+    EXPECT_EQ(checksum[1], static_cast<std::uint8_t>(a2l.checksum_type));
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, SlaveMatchesA2l, ::testing::ValuesIn(example_models),
