@@ -228,6 +228,25 @@ TEST_F(XcpCommand, RecordGoesOnAcrossTheClocksWrapAndFailsWhenPacketsAreLost) {
   std::filesystem::remove(csv_file);
 }
 
+// GET_ID with the identification in the response (mode bit 0), and an error answer that fails the command.
+TEST_F(XcpCommand, InfoReadsTheIdentificationFromTheResponseAndFailsOnAnErrorAnswer) {
+  ScriptedSlave slave{{
+      {"FF 00", {"FF 05 81 08 00 20 01 01"}},
+      {"DA", {"FF 11 00 01 00 01 00 80"}},
+      {"D9", {"FF 01 1D 00 00 32 00 01"}},
+      {"FA 01", {"FF 01 00 00 00 00 00 04 70 75 6D 70"}},  // "pump", Motorola length
+      {"FE", {"FE 31"}},
+  }};
+  const Outcome info = run({"xcp", "info", "--connect", "tcp://127.0.0.1:" + std::to_string(slave.port())});
+  EXPECT_EQ(slave.differences(), "");
+  EXPECT_EQ(info.exit_code, ExitCode::failure);
+  EXPECT_EQ(info.out,
+            "slave        pump\nMAX_CTO      8\nMAX_DTO      32\nprotocol     1, transport 1\nbyte order   Motorola\n"
+            "resources    calibration/paging DAQ\nDAQ packets  relative ODT number, DAQ list word; 2-byte timestamps "
+            "of 1e-06 s\n");
+  EXPECT_EQ(info.err, "duet xcp: DISCONNECT: ERR_GENERIC (0x31)\n");
+}
+
 TEST_F(XcpCommand, UsageAndConnectionErrorsAreClear) {
   EXPECT_EQ(run({"xcp", "info"}).err, "duet xcp: no slave to talk to: give --connect tcp://host:port or --a2l FILE\n");
   EXPECT_EQ(run({"xcp", "info", "--connect", "ftp://x:1"}).err,
