@@ -157,7 +157,7 @@ duet::Result<Recording> play_the_table(Master& master, const Addresses& at) {
 
   // Samples before the play-out began repeat the initial output (0); the play-out itself is the table, once per step.
   std::vector<std::uint16_t> recorded;
-  std::vector<std::uint32_t> timestamps;
+  std::vector<std::int64_t> ticks;
   std::chrono::steady_clock::time_point first_arrival;
   std::chrono::steady_clock::time_point last_arrival;
   bool started = false;
@@ -175,7 +175,7 @@ duet::Result<Recording> play_the_table(Master& master, const Addresses& at) {
       if (!started) continue;
       if (recorded.size() < table_size) {
         recorded.push_back(value);
-        timestamps.push_back(sample.timestamp);
+        ticks.push_back(sample.ticks);
         last_arrival = arrival;
       }
     }
@@ -184,16 +184,16 @@ duet::Result<Recording> play_the_table(Master& master, const Addresses& at) {
   (void)master.disconnect();
 
   Recording recording{.recorded = recorded.size(),
-                      .lost_packets = master.channel().counter_gaps(),
+                      .lost_packets = master.counters().lost() - master.overload_events(),
                       .overload_events = master.overload_events(),
                       .wall_s = std::chrono::duration<double>(last_arrival - first_arrival).count()};
   for (std::size_t index = 0; index < recorded.size(); ++index)
     recording.equal += recorded[index] == table[index] ? 1U : 0U;
   // The steps' timestamps: one period apart on average; the slave's clock stamped them, not the master's arrival.
-  // Unsigned differences, so that a clock that wrapped in between still gives the right one.
-  if (timestamps.size() > 1) {
-    recording.mean_step_us =
-        static_cast<double>(timestamps.back() - timestamps.front()) / static_cast<double>(timestamps.size() - 1);
+  // The master counts them on across the clock's wraps.
+  if (ticks.size() > 1) {
+    recording.mean_step_us = static_cast<double>(ticks.back() - ticks.front()) * master.seconds_per_tick() * 1e6 /
+                             static_cast<double>(ticks.size() - 1);
   }
   return recording;
 }

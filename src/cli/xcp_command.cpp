@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdio>
 #include <iomanip>
 #include <memory>
@@ -44,6 +45,21 @@ Result<std::uint32_t> parse_number(const std::string& text) {
   }
 }
 
+// How the slave builds DAQ packets, for people: "relative ODT number, DAQ list word; 4-byte timestamps of 1e-06 s".
+std::string daq_layout(const DaqProcessor& daq) {
+  constexpr std::array identification{"absolute ODT number", "relative ODT number, DAQ list byte",
+                                      "relative ODT number, DAQ list word",
+                                      "relative ODT number, fill byte, DAQ list word"};
+  std::ostringstream text;
+  text << identification[static_cast<std::size_t>(daq.identification)] << "; ";
+  if (daq.timestamps()) {
+    text << static_cast<unsigned>(daq.timestamp_size) << "-byte timestamps of " << daq.seconds_per_tick() << " s";
+  } else {
+    text << "no timestamps";
+  }
+  return text.str();
+}
+
 ExitCode run_info(const XcpOptions& options, Streams streams) {
   auto session = open_session(options, true);
   if (!session) return report({session.error()}, streams);
@@ -51,22 +67,30 @@ ExitCode run_info(const XcpOptions& options, Streams streams) {
   const SlaveProperties& slave = master.properties();
   auto id = master.identification(1);
   const std::string name = id ? std::string(id.value().begin(), id.value().end()) : std::string{};
+  const std::optional<DaqProcessor>& daq = master.daq_processor();
   json info{{"identification", name},
             {"max_cto", slave.max_cto},
             {"max_dto", slave.max_dto},
             {"protocol_version", slave.protocol_version},
             {"transport_version", slave.transport_version},
+            {"byte_order", slave.byte_order == xcp::ByteOrder::intel ? "intel" : "motorola"},
             {"calibration_paging", (slave.resources & xcp::resource::calibration_paging) != 0},
             {"daq", (slave.resources & xcp::resource::daq) != 0}};
-  (void)master.disconnect();
+  if (daq) info["daq_layout"] = daq_layout(*daq);
+  const Status disconnected = master.disconnect();
   if (options.json) {
     streams.out << info.dump(2) << '\n';
   } else {
     streams.out << "slave        " << name << "\nMAX_CTO      " << slave.max_cto + 0 << "\nMAX_DTO      "
                 << slave.max_dto << "\nprotocol     " << slave.protocol_version + 0 << ", transport "
-                << slave.transport_version + 0 << "\nresources    "
+                << slave.transport_version + 0 << "\nbyte order   "
+                << (slave.byte_order == xcp::ByteOrder::intel ? "Intel" : "Motorola") << "\nresources    "
                 << (info["calibration_paging"] ? "calibration/paging " : "") << (info["daq"] ? "DAQ" : "") << '\n';
+    if (daq) streams.out << "DAQ packets  " << daq_layout(*daq) << '\n';
   }
+  // What was learnt is shown; an error answer still fails the command.
+  if (!id) return report({id.error()}, streams);
+  if (!disconnected) return report({disconnected.error()}, streams);
   return ExitCode::success;
 }
 
@@ -130,7 +154,7 @@ ExitCode run_read(const XcpOptions& options, Streams streams) {
     const std::vector<double> decoded = decode(found, bytes.value());
     values[target] = found.count == 1 ? json(decoded.front()) : json(decoded);
   }
-  (void)master.disconnect();
+  if (Status disconnected = master.disconnect(); !disconnected) return report({disconnected.error()}, streams);
   if (options.json) {
     streams.out << values.dump(2) << '\n';
   } else {
@@ -148,7 +172,7 @@ ExitCode run_write(const XcpOptions& options, Streams streams) {
     if (!write) return report({write.error()}, streams);
     if (Status written = apply(master, write.value()); !written) return report({written.error()}, streams);
   }
-  (void)master.disconnect();
+  if (Status disconnected = master.disconnect(); !disconnected) return report({disconnected.error()}, streams);
   return ExitCode::success;
 }
 
@@ -159,7 +183,9 @@ ExitCode run_checksum(const XcpOptions& options, Streams streams) {
   if (!session) return report({session.error()}, streams);
   auto checksum = session.value().master->checksum(0, address.value(), options.size);
   if (!checksum) return report({checksum.error()}, streams);
-  (void)session.value().master->disconnect();
+  if (Status disconnected = session.value().master->disconnect(); !disconnected) {
+    return report({disconnected.error()}, streams);
+  }
   char text[16];
   std::snprintf(text, sizeof(text), "0x%08X", checksum.value());
   if (options.json) {
@@ -188,7 +214,7 @@ ExitCode run_page(const XcpOptions& options, Streams streams) {
   auto xcp_page = master.calibration_page(0x02, segment);
   if (!ecu) return report({ecu.error()}, streams);
   if (!xcp_page) return report({xcp_page.error()}, streams);
-  (void)master.disconnect();
+  if (Status disconnected = master.disconnect(); !disconnected) return report({disconnected.error()}, streams);
   if (options.json) {
     streams.out << json{{"segment", segment}, {"ecu_page", ecu.value()}, {"xcp_page", xcp_page.value()}}.dump(2)
                 << '\n';

@@ -12,6 +12,7 @@
 #include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
+#include "scripted_slave.hpp"
 #include "test_target.hpp"
 
 namespace duet::cli {
@@ -177,6 +178,73 @@ TEST_F(XcpCommand, ChecksumAndPages) {
   EXPECT_EQ(target.ecu_page, target.reference.data());
   const Outcome bad_segment = run({"xcp", "page", "--connect", endpoint, "--segment", "3"});
   EXPECT_EQ(bad_segment.err, "duet xcp: GET_CAL_PAGE: ERR_SEGMENT_NOT_VALID (0x28)\n");
+}
+
+TEST_F(XcpCommand, RecordFailsWhenNoSampleComes) {
+  const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms",
+                                "--duration", "0.1"});  // the model does not step: no event
+  EXPECT_EQ(recorded.exit_code, ExitCode::failure);
+  EXPECT_NE(recorded.err.find("recorded 0 samples"), std::string::npos) << recorded.err;
+  EXPECT_NE(recorded.err.find("duet xcp: no sample came in 0.1 s: is event '1 ms' running?\n"), std::string::npos)
+      << recorded.err;
+}
+
+// A slave like a widely used slave library on Ethernet, scripted byte for byte: relative ODT numbers with an aligned
+// DAQ list word, fixed 4-byte timestamps in 1 us, every packet padded to 4 bytes. The recording's times go on across
+// the clock's wrap; a packet of a list not the master's counts as lost, and so the command fails.
+TEST_F(XcpCommand, RecordGoesOnAcrossTheClocksWrapAndFailsWhenPacketsAreLost) {
+  constexpr const char* ok = "FF 00 00 00";
+  ScriptedSlave slave{{
+      {"FF 00", {"FF 05 80 FF DC 05 01 01"}},
+      {"DA", {"FF 11 00 01 03 00 00 C0"}},
+      {"D9", {"FF 01 F8 01 00 3C 01 00"}},
+      {"D6", {ok}},
+      {"D5 00 01 00", {ok}},
+      {"D4 00 00 00 01", {ok}},
+      {"D3 00 00 00 00 02", {ok}},
+      {"E2 00 00 00 00 00", {ok}},
+      {"E1 FF 04 00 00 10 00 00", {ok}},
+      {"E1 FF 02 00 04 10 00 00", {ok}},
+      {"E0 10 00 00 00 00 01 00", {ok}},
+      {"DE 02 00 00", {ok}},
+      {"DD 01",
+       {ok, "00 00 00 00 F0 FF FF FF 01 00 00 00 02 00 00 00", "00 00 00 00 10 00 00 00 02 00 00 00 04 00 00 00",
+        "00 00 07 00 20 00 00 00 00 00 00 00 00 00 00 00", "00 00 00 00 30 00 00 00 03 00 00 00 06 00 00 00"}},
+      {"DD 00", {ok}},
+      {"FE", {ok}},
+  }};
+  const std::string connect = "tcp://127.0.0.1:" + std::to_string(slave.port());
+  const std::string csv_file = a2l_file + ".csv";
+  const Outcome recorded = run({"xcp", "record", "--connect", connect, "--a2l", a2l_file, "--signal", "counter",
+                                "--signal", "twice", "--event", "1 ms", "--duration", "0.2", "--output", csv_file});
+  EXPECT_EQ(slave.differences(), "");
+  EXPECT_EQ(recorded.exit_code, ExitCode::failure);
+  EXPECT_NE(recorded.err.find("recorded 3 samples of 2 signals on event '1 ms' (0 overloads, 0 lost packets, 1 "
+                              "discarded: 1 of unknown ODTs, 0 too short, 0 of incomplete samples, 0 unexpected; 3 "
+                              "with fill bytes)\nduet xcp: samples were lost (see the counts above)\n"),
+            std::string::npos)
+      << recorded.err;
+  EXPECT_EQ(read_text_file(csv_file).value(), "time_s,counter,twice\n0,1,2\n3.2e-05,2,4\n6.4e-05,3,6\n");
+  std::filesystem::remove(csv_file);
+}
+
+// GET_ID with the identification in the response (mode bit 0), and an error answer that fails the command.
+TEST_F(XcpCommand, InfoReadsTheIdentificationFromTheResponseAndFailsOnAnErrorAnswer) {
+  ScriptedSlave slave{{
+      {"FF 00", {"FF 05 81 08 00 20 01 01"}},
+      {"DA", {"FF 11 00 01 00 01 00 80"}},
+      {"D9", {"FF 01 1D 00 00 32 00 01"}},
+      {"FA 01", {"FF 01 00 00 00 00 00 04 70 75 6D 70"}},  // "pump", Motorola length
+      {"FE", {"FE 31"}},
+  }};
+  const Outcome info = run({"xcp", "info", "--connect", "tcp://127.0.0.1:" + std::to_string(slave.port())});
+  EXPECT_EQ(slave.differences(), "");
+  EXPECT_EQ(info.exit_code, ExitCode::failure);
+  EXPECT_EQ(info.out,
+            "slave        pump\nMAX_CTO      8\nMAX_DTO      32\nprotocol     1, transport 1\nbyte order   Motorola\n"
+            "resources    calibration/paging DAQ\nDAQ packets  relative ODT number, DAQ list word; 2-byte timestamps "
+            "of 1e-06 s\n");
+  EXPECT_EQ(info.err, "duet xcp: DISCONNECT: ERR_GENERIC (0x31)\n");
 }
 
 TEST_F(XcpCommand, UsageAndConnectionErrorsAreClear) {

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <optional>
 #include <span>
+#include <sstream>
 #include <stdexcept>
 
 #include "duet/plot/figure.hpp"
@@ -25,6 +26,22 @@ struct TimedWrite {
   double at_s = 0;  // after the recording started, by the PC's clock (as --duration counts)
   ParameterWrite write;
 };
+
+// What became of the packets: "(2 overloads, 0 lost packets, 3 discarded: 1 of unknown ODTs, ...)".
+std::string packet_summary(const PacketCounters& counters) {
+  const std::uint64_t discarded =
+      counters.unknown_identification + counters.too_short + counters.incomplete + counters.unexpected;
+  std::string summary = std::to_string(counters.overload_events) + " overloads, " +
+                        std::to_string(counters.counter_gaps) + " lost packets, " + std::to_string(discarded) +
+                        " discarded";
+  if (discarded != 0) {
+    summary += ": " + std::to_string(counters.unknown_identification) + " of unknown ODTs, " +
+               std::to_string(counters.too_short) + " too short, " + std::to_string(counters.incomplete) +
+               " of incomplete samples, " + std::to_string(counters.unexpected) + " unexpected";
+  }
+  if (counters.padded != 0) summary += "; " + std::to_string(counters.padded) + " with fill bytes";
+  return summary;
+}
 
 Result<std::vector<TimedWrite>> parse_timed_writes(const Session& session, const XcpOptions& options) {
   std::vector<TimedWrite> writes;
@@ -83,6 +100,13 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
   }
   auto writes = parse_timed_writes(session.value(), options);
   if (!writes) return report({writes.error()}, streams);
+  // Times by the slave's timestamps, unless asked otherwise or there are none.
+  const bool timestamped = !options.event_time && master.seconds_per_tick() > 0;
+  if (!options.event_time && !timestamped && event->time_cycle == 0) {
+    return report({"the slave sends no timestamps and the A2L gives event '" + event->name +
+                   "' no period: the samples cannot be timed"},
+                  streams);
+  }
 
   std::ofstream file;
   if (!options.output.empty()) {
@@ -101,12 +125,15 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
   for (const plot::Series& column : figure.series) csv << ',' << column.name;
   csv << '\n';
 
-  const double tick_seconds = a2l.timestamp_tick_s();
+  const double tick_seconds = master.seconds_per_tick();
   const double event_period_s = event->period_s();
+  if (!options.event_time && !timestamped) {
+    streams.err << "duet xcp: the slave sends no timestamps: the samples are timed by the event's period\n";
+  }
   const bool terminal = ::isatty(STDERR_FILENO) != 0 && &streams.err == &std::cerr;
   const auto start = std::chrono::steady_clock::now();
   const auto end = start + std::chrono::duration<double>(options.duration_s);
-  std::optional<std::uint32_t> first_timestamp;
+  std::optional<std::int64_t> first_ticks;
   std::uint64_t samples = 0;
   double last_time_s = 0;
   std::size_t next_write = 0;
@@ -128,9 +155,9 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
     auto received = master.receive_samples(wait);
     if (!received) return report({received.error()}, streams);
     for (const DaqSample& sample : received.value()) {
-      if (!first_timestamp) first_timestamp = sample.timestamp;
-      last_time_s = options.event_time ? static_cast<double>(samples) * event_period_s
-                                       : static_cast<double>(sample.timestamp - *first_timestamp) * tick_seconds;
+      if (!first_ticks) first_ticks = sample.ticks;
+      last_time_s = timestamped ? static_cast<double>(sample.ticks - *first_ticks) * tick_seconds
+                                : static_cast<double>(samples) * event_period_s;
       csv << std::setprecision(9) << last_time_s;
       if (plotting) figure.time.push_back(last_time_s);
       std::size_t at = 0;
@@ -152,13 +179,13 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
                   << " s, " << samples << " samples" << std::flush;
     }
   }
-  (void)master.stop_daq();
-  (void)master.disconnect();
+  const Status stopped = master.stop_daq();
+  const Status disconnected = master.disconnect();
   if (terminal) streams.err << '\n';
-  const std::uint64_t lost = master.channel().counter_gaps();
+  const PacketCounters counters = master.counters();
   streams.err << "recorded " << samples << " samples of " << recorded.size() << " signals on event '" << options.event
-              << "' (" << master.overload_events() << " overloads, " << lost << " lost packets)\n";
-  if (options.event_time && (lost != 0 || master.overload_events() != 0)) {
+              << "' (" << packet_summary(counters) << ")\n";
+  if (options.event_time && counters.lost() != 0) {
     streams.err << "duet xcp: samples were lost, so the times --event-time counted after the first loss are early\n";
   }
   if (plotting) {
@@ -166,6 +193,14 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
     plot_file.close();
     if (!plot_file) return report({options.plot + ": cannot be written"}, streams);
   }
+  if (!stopped) return report({stopped.error()}, streams);
+  if (!disconnected) return report({disconnected.error()}, streams);
+  if (samples == 0) {
+    std::ostringstream problem;
+    problem << "no sample came in " << options.duration_s << " s: is event '" << event->name << "' running?";
+    return report({problem.str()}, streams);
+  }
+  if (counters.lost() != 0) return report({"samples were lost (see the counts above)"}, streams);
   return ExitCode::success;
 }
 

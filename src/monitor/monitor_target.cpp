@@ -254,10 +254,9 @@ class MonitorTarget::Impl {
   }
 
   Status sample(Master& master) {
-    const double tick_s = options_.a2l.timestamp_tick_s();
-    std::optional<std::uint32_t> last_timestamp;
-    std::uint64_t ticks = 0;
-    bool timestamped = false;
+    // The slave's timestamps, counted on across their wraps by the master; a slave without them gets the event's
+    // period per sample.
+    const double tick_s = master.seconds_per_tick();
     std::uint64_t count = 0;
     const double event_s = event_ ? event_->period_s() : 0.0;
     std::vector<double> times;
@@ -273,13 +272,7 @@ class MonitorTarget::Impl {
       auto received = master.receive_samples(signals_.empty() ? std::chrono::milliseconds{50} : daq_wait);
       if (!received) return Failure{received.error()};
       for (const DaqSample& sample : received.value()) {
-        // The slave's timestamp wraps at 32 bits: count on across the wrap. A slave without timestamps (all 0)
-        // gets the event's period per sample.
-        ticks =
-            last_timestamp ? ticks + static_cast<std::uint32_t>(sample.timestamp - *last_timestamp) : sample.timestamp;
-        last_timestamp = sample.timestamp;
-        timestamped = timestamped || sample.timestamp != 0;
-        times.push_back(timestamped ? static_cast<double>(ticks) * tick_s : static_cast<double>(count) * event_s);
+        times.push_back(tick_s > 0 ? static_cast<double>(sample.ticks) * tick_s : static_cast<double>(count) * event_s);
         ++count;
         std::size_t at = 0;
         for (std::size_t signal = 0; signal < signals_.size(); ++signal) {
@@ -291,8 +284,9 @@ class MonitorTarget::Impl {
         }
       }
       samples_ += received.value().size();
-      packets_lost_ = master.channel().counter_gaps();
-      overloads_ = master.overload_events();
+      const PacketCounters counters = master.counters();
+      packets_lost_ = counters.lost() - counters.overload_events;  // lost on the way, or unusable
+      overloads_ = counters.overload_events;
       if (!times.empty() && Clock::now() - block_started >= block_period) {
         post([this, times = std::move(times), columns = std::move(columns)] { dashboard_->samples(times, columns); });
         times = {};

@@ -73,7 +73,7 @@ std::span<const std::uint8_t> Slave::handle(std::span<const std::uint8_t> comman
   if (code != static_cast<std::uint8_t>(Command::download_next)) download_remaining_ = 0;
 
   const std::size_t packet_limit = configuration_.max_cto < max_packet ? configuration_.max_cto : max_packet;
-  PacketWriter payload{std::span{response_}.subspan(1, packet_limit - 1)};
+  PacketWriter payload{std::span{response_}.subspan(1, packet_limit - 1), configuration_.byte_order};
   Result result = fail(Error::cmd_unknown);
   if (code >= 0xC0) {
     const CommandEntry& entry = commands()[code - 0xC0U];
@@ -84,7 +84,7 @@ std::span<const std::uint8_t> Slave::handle(std::span<const std::uint8_t> comman
     } else if ((entry.resource & locked_) != 0) {
       result = fail(Error::access_locked);
     } else {
-      PacketReader request{command};
+      PacketReader request{command, configuration_.byte_order};
       request.skip(1);
       result = (this->*entry.handler)(request, payload);
     }

@@ -5,8 +5,10 @@
 namespace duet::xcp {
 namespace {
 
-// COMM_MODE_BASIC: Intel byte order, byte address granularity, no slave block mode, GET_COMM_MODE_INFO available.
-constexpr std::uint8_t comm_mode_basic = 0x80;
+// COMM_MODE_BASIC: byte address granularity, no slave block mode, GET_COMM_MODE_INFO available; bit 0 is the byte
+// order (1 = Motorola).
+constexpr std::uint8_t comm_mode_optional_available = 0x80;
+constexpr std::uint8_t comm_mode_motorola = 0x01;
 // COMM_MODE_OPTIONAL: master block mode (DOWNLOAD_NEXT sequences).
 constexpr std::uint8_t master_block_mode = 0x01;
 constexpr std::uint8_t driver_version = 0x10;  // 1.0, in nibbles
@@ -17,6 +19,9 @@ constexpr std::uint8_t protectable =
 constexpr std::uint8_t id_ascii_text = 0;
 constexpr std::uint8_t id_a2l_name = 1;
 constexpr std::uint8_t id_a2l_file = 4;
+// GET_ID's mode byte, bit 0: the identification follows in this response (else the master uploads it from the MTA).
+constexpr std::uint8_t id_in_response = 0x01;
+constexpr std::size_t id_response_header = 8;  // PID, mode, reserved word, length
 
 std::span<const std::uint8_t> as_bytes(std::string_view text) {
   return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
@@ -34,8 +39,17 @@ Slave::Result Slave::connect(PacketReader& request, PacketWriter& response) {
   connected_ = true;
   locked_ = configuration_.protected_resources;
   reset_session();
+  const bool usual_daq_layout = configuration_.identification_field == IdentificationField::absolute &&
+                                configuration_.timestamp_size == TimestampSize::dword &&
+                                configuration_.byte_order == ByteOrder::intel;
+  sample_.store(configuration_.queue == nullptr ? sample_nothing
+                : usual_daq_layout              ? sample_in_usual_layout
+                                                : sample_in_other_layout,
+                std::memory_order_relaxed);
   const bool has_daq = !configuration_.daq.lists.empty() && configuration_.queue != nullptr;
   const auto resources = static_cast<std::uint8_t>(resource::calibration_paging | (has_daq ? resource::daq : 0U));
+  const std::uint8_t comm_mode_basic =
+      comm_mode_optional_available | (configuration_.byte_order == ByteOrder::motorola ? comm_mode_motorola : 0U);
   response.u8(resources).u8(comm_mode_basic).u8(configuration_.max_cto);
   response.u16(configuration_.max_dto).u8(protocol_layer_version).u8(transport_layer_version);
   return ok;
@@ -62,15 +76,23 @@ Slave::Result Slave::get_comm_mode_info(PacketReader&, PacketWriter& response) {
   return ok;
 }
 
-// The identification is uploaded through the MTA (mode 0), as the standard's masters expect for the A2L file.
-// An identification the firmware does not have has length 0.
+// The identification is uploaded through the MTA (mode 0), as the standard's masters expect for the A2L file, or
+// for the short ones, if the firmware chooses, sent in the response itself (mode 1). An identification the firmware
+// does not have has length 0.
 Slave::Result Slave::get_id(PacketReader& request, PacketWriter& response) {
   const std::uint8_t type = request.u8();
   std::span<const std::uint8_t> identification;
-  if (type == id_ascii_text || type == id_a2l_name) identification = as_bytes(configuration_.identification);
+  const bool short_text = type == id_ascii_text || type == id_a2l_name;
+  if (short_text) identification = as_bytes(configuration_.identification);
   if (type == id_a2l_file) identification = configuration_.a2l;
+  const auto length = static_cast<std::uint32_t>(identification.size());
+  if (short_text && configuration_.identification_in_response &&
+      id_response_header + identification.size() <= configuration_.max_cto) {
+    response.u8(id_in_response).u16(0).u32(length).bytes(identification);
+    return ok;
+  }
   mta_ = {.identification = identification, .points_to_identification = true};
-  response.u8(0).u8(0).u8(0).u32(static_cast<std::uint32_t>(identification.size()));
+  response.u8(0).u16(0).u32(length);
   return ok;
 }
 
@@ -161,14 +183,16 @@ Slave::Result Slave::build_checksum(PacketReader& request, PacketWriter& respons
   request.skip(3);
   const std::uint32_t size = request.u32();
   const ChecksumType type = configuration_.checksum_type;
-  const std::uint32_t granule = type == ChecksumType::add_44                                   ? 4U
+  const std::uint16_t granule = type == ChecksumType::add_44                                   ? 4U
                                 : type == ChecksumType::add_22 || type == ChecksumType::add_24 ? 2U
                                                                                                : 1U;
-  if (size == 0 || size > configuration_.max_checksum_block || size % granule != 0) {
-    response.u32(configuration_.max_checksum_block);  // the largest block the slave accepts
+  if (mta_.points_to_identification) return fail(Error::access_denied);
+  if (size == 0 || size > configuration_.max_checksum_block || size % granule != 0 || mta_.address % granule != 0) {
+    // The negative response's layout: MTA_BLOCK_SIZE_ALIGN (word) at byte 2, the largest block the slave accepts
+    // (dword) at byte 4, where the positive response has the checksum.
+    response.u16(granule).u32(configuration_.max_checksum_block);
     return fail(Error::out_of_range);
   }
-  if (mta_.points_to_identification) return fail(Error::access_denied);
   const std::uint8_t* block = readable_memory(mta_.extension, mta_.address, size);
   if (block == nullptr) return fail(Error::access_denied);
   mta_.address += size;

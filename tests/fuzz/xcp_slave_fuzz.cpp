@@ -1,6 +1,7 @@
 // libFuzzer target: arbitrary packets into an XCP slave with real declared memory (so AddressSanitizer sees every
-// byte it may touch), calibration pages, DAQ storage and a transmit queue. The input is a sequence of packets, each
-// prefixed with its length; between packets, events sample DAQ and the transport drains the queue.
+// byte it may touch), calibration pages, DAQ storage and a transmit queue. The input's first byte chooses the packet
+// layout (identification field, timestamp size, byte order); the rest is a sequence of packets, each prefixed with
+// its length; between packets, events sample DAQ and the transport drains the queue.
 
 #include <array>
 #include <cstddef>
@@ -66,11 +67,19 @@ struct Target {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
   Target target;
+  const std::uint8_t layout = data[0];
+  constexpr std::array timestamp_sizes{TimestampSize::byte, TimestampSize::word, TimestampSize::dword,
+                                       TimestampSize::dword};
+  target.configuration.identification_field = static_cast<IdentificationField>(layout & 0x03U);
+  target.configuration.timestamp_size = timestamp_sizes[(layout >> 2U) & 0x03U];
+  target.configuration.byte_order = (layout & 0x10U) != 0 ? ByteOrder::motorola : ByteOrder::intel;
+  target.configuration.identification_in_response = (layout & 0x20U) != 0;
   const std::array<std::uint8_t, 2> connect{0xFF, 0x00};
   (void)target.slave.handle(connect);
   std::array<std::uint8_t, 256> sent{};
-  std::size_t at = 0;
+  std::size_t at = 1;
   while (at < size) {
     const std::size_t length = data[at++];
     const std::size_t available = size - at < length ? size - at : length;

@@ -1,65 +1,48 @@
+// The master's commands: session, memory, checksum, identification, seed & key, pages. Multi-byte fields go both
+// ways in the slave's byte order; responses may be longer than their layout (fill bytes), never shorter.
+
 #include "duet/xcp/host/master.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
+#include "command_packet.hpp"
 #include "duet/xcp/protocol.hpp"
 
 namespace duet::xcp::host {
 namespace {
 
-constexpr std::size_t timestamp_size = 4;
+// COMM_MODE_BASIC bits 1-2: the size of an address's element.
+constexpr std::uint8_t address_granularity_bits = 0x06;
+constexpr std::uint8_t motorola_bit = 0x01;
+constexpr std::uint8_t smallest_max_cto = 8;
+// GET_ID's mode byte.
+constexpr std::uint8_t id_in_response = 0x01;
+constexpr std::uint8_t id_compressed_or_encrypted = 0x02;
+constexpr std::size_t id_response_header = 8;
+constexpr std::uint32_t largest_identification = 64U << 20U;  // an A2L of 64 MB is no identification
 
-void put_u16(std::vector<std::uint8_t>& bytes, std::uint16_t value) {
-  bytes.push_back(static_cast<std::uint8_t>(value));
-  bytes.push_back(static_cast<std::uint8_t>(value >> 8U));
-}
-void put_u32(std::vector<std::uint8_t>& bytes, std::uint32_t value) {
-  put_u16(bytes, static_cast<std::uint16_t>(value));
-  put_u16(bytes, static_cast<std::uint16_t>(value >> 16U));
-}
-std::uint32_t get_u32(std::span<const std::uint8_t> bytes, std::size_t at) {
-  return static_cast<std::uint32_t>(bytes[at]) | (static_cast<std::uint32_t>(bytes[at + 1]) << 8U) |
-         (static_cast<std::uint32_t>(bytes[at + 2]) << 16U) | (static_cast<std::uint32_t>(bytes[at + 3]) << 24U);
-}
-
-std::string error_message(std::string_view name, std::uint8_t code) {
+std::string error_message(std::string_view name, std::span<const std::uint8_t> packet) {
+  const std::uint8_t code = packet.size() > 1 ? packet[1] : 0;
   char hex[8];
   std::snprintf(hex, sizeof(hex), "0x%02X", code);
   return std::string{name} + ": " + xcp::name(static_cast<Error>(code)) + " (" + hex + ")";
 }
+
+Failure too_short(std::string_view name) { return Failure{std::string{name} + ": the response is too short"}; }
 
 }  // namespace
 
 Master::Master(std::unique_ptr<MasterChannel> channel, std::chrono::milliseconds timeout)
     : channel_(std::move(channel)), timeout_(timeout) {}
 
-void Master::take_asynchronous(std::vector<std::uint8_t> packet) {
-  const std::uint8_t pid = packet[0];
-  if (pid == pid::event) {
-    if (packet.size() > 1 && packet[1] == static_cast<std::uint8_t>(EventCode::daq_overload)) ++overload_events_;
-    return;
-  }
-  if (pid >= pid::service || pid >= odts_by_pid_.size() || odts_by_pid_[pid].payload == 0) return;  // not ours
-  const OdtLayout& odt = odts_by_pid_[pid];
-  Assembly& assembly = assemblies_[odt.list];
-  std::size_t at = 1;
-  if (odt.first) {
-    if (packet.size() < 1 + timestamp_size) return;
-    assembly = {get_u32(packet, 1), {}, true};
-    at += timestamp_size;
-  }
-  if (!assembly.started || packet.size() != at + odt.payload) {  // an incomplete sample: wait for the next one
-    assembly.started = false;
-    return;
-  }
-  assembly.bytes.insert(assembly.bytes.end(), packet.begin() + static_cast<std::ptrdiff_t>(at), packet.end());
-  if (odt.last) {
-    samples_.push_back({odt.list, assembly.timestamp, std::move(assembly.bytes)});
-    assembly = {};
-  }
+PacketCounters Master::counters() const {
+  PacketCounters counters = counters_;
+  counters.counter_gaps = channel_->counter_gaps();
+  return counters;
 }
 
-Result<std::vector<std::uint8_t>> Master::command(std::span<const std::uint8_t> request, std::string_view name) {
+Result<std::vector<std::uint8_t>> Master::exchange(std::span<const std::uint8_t> request, std::string_view name) {
   if (Status sent = channel_->send(request); !sent) return Failure{std::string{name} + ": " + sent.error()};
   const auto deadline = std::chrono::steady_clock::now() + timeout_;
   for (;;) {
@@ -71,10 +54,16 @@ Result<std::vector<std::uint8_t>> Master::command(std::span<const std::uint8_t> 
     if (!received) return Failure{std::string{name} + ": " + received.error()};
     if (!received.value()) continue;
     std::vector<std::uint8_t> packet = std::move(*received.value());
-    if (packet[0] == pid::response) return packet;
-    if (packet[0] == pid::error) return Failure{error_message(name, packet.size() > 1 ? packet[1] : 0)};
+    if (packet[0] == pid::response || packet[0] == pid::error) return packet;
     take_asynchronous(std::move(packet));
   }
+}
+
+Result<std::vector<std::uint8_t>> Master::command(std::span<const std::uint8_t> request, std::string_view name) {
+  auto answer = exchange(request, name);
+  if (!answer) return answer;
+  if (answer.value()[0] == pid::error) return Failure{error_message(name, answer.value())};
+  return answer;
 }
 
 Result<SlaveProperties> Master::connect() {
@@ -82,10 +71,28 @@ Result<SlaveProperties> Master::connect() {
   auto response = command(request, "CONNECT");
   if (!response) return Failure{response.error()};
   const std::vector<std::uint8_t>& bytes = response.value();
-  if (bytes.size() < 8) return Failure{"CONNECT: the response is too short"};
-  if ((bytes[2] & 0x01) != 0) return Failure{"CONNECT: the slave uses Motorola byte order, which this master does not"};
-  properties_ = {bytes[1], bytes[2], bytes[3], static_cast<std::uint16_t>(bytes[4] | (bytes[5] << 8U)),
-                 bytes[6], bytes[7]};
+  if (bytes.size() < 8) return too_short("CONNECT");
+  const std::uint8_t comm_mode_basic = bytes[2];
+  if ((comm_mode_basic & address_granularity_bits) != 0) {
+    return Failure{"CONNECT: the slave addresses memory in elements of " +
+                   std::to_string(1U << ((comm_mode_basic & address_granularity_bits) >> 1U)) +
+                   " bytes; this master handles byte addresses only"};
+  }
+  if (bytes[3] < smallest_max_cto) {
+    return Failure{"CONNECT: MAX_CTO " + std::to_string(bytes[3]) + " is below the standard's least, 8"};
+  }
+  const ByteOrder order = (comm_mode_basic & motorola_bit) != 0 ? ByteOrder::motorola : ByteOrder::intel;
+  PacketReader fields{bytes, order};
+  fields.skip(4);
+  const std::uint16_t max_dto = fields.u16();
+  properties_ = {bytes[1], comm_mode_basic, bytes[3], max_dto, bytes[6], bytes[7], order};
+  daq_processor_.reset();
+  layouts_.clear();
+  by_pid_.clear();
+  if ((properties_.resources & resource::daq) != 0) {
+    // A slave may answer these only after UNLOCK; start_daq() asks again.
+    (void)read_daq_processor();
+  }
   return properties_;
 }
 
@@ -96,14 +103,13 @@ Status Master::disconnect() {
 }
 
 Status Master::set_mta(std::uint8_t extension, std::uint32_t address) {
-  std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::set_mta), 0, 0, extension};
-  put_u32(request, address);
-  auto response = command(request, "SET_MTA");
+  const CommandPacket request =
+      CommandPacket{Command::set_mta, properties_.byte_order}.u8(0).u8(0).u8(extension).u32(address);
+  auto response = command(request.packet(), "SET_MTA");
   return response ? done() : Status{Failure{response.error()}};
 }
 
-Result<std::vector<std::uint8_t>> Master::upload(std::uint8_t extension, std::uint32_t address, std::uint32_t size) {
-  if (Status mta = set_mta(extension, address); !mta) return Failure{mta.error()};
+Result<std::vector<std::uint8_t>> Master::upload_at_mta(std::uint32_t size) {
   std::vector<std::uint8_t> bytes;
   const std::uint32_t chunk_limit = properties_.max_cto - 1U;
   while (bytes.size() < size) {
@@ -112,10 +118,18 @@ Result<std::vector<std::uint8_t>> Master::upload(std::uint8_t extension, std::ui
     const std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::upload), chunk};
     auto response = command(request, "UPLOAD");
     if (!response) return Failure{response.error()};
-    if (response.value().size() != 1U + chunk) return Failure{"UPLOAD: the response has the wrong length"};
-    bytes.insert(bytes.end(), response.value().begin() + 1, response.value().end());
+    if (response.value().size() < 1U + chunk) {
+      return Failure{"UPLOAD: " + std::to_string(response.value().size() - 1) + " of " + std::to_string(chunk) +
+                     " bytes came"};
+    }
+    bytes.insert(bytes.end(), response.value().begin() + 1, response.value().begin() + 1 + chunk);
   }
   return bytes;
+}
+
+Result<std::vector<std::uint8_t>> Master::upload(std::uint8_t extension, std::uint32_t address, std::uint32_t size) {
+  if (Status mta = set_mta(extension, address); !mta) return Failure{mta.error()};
+  return upload_at_mta(size);
 }
 
 Status Master::download(std::uint8_t extension, std::uint32_t address, std::span<const std::uint8_t> bytes) {
@@ -153,30 +167,55 @@ Status Master::download(std::uint8_t extension, std::uint32_t address, std::span
 
 Result<std::uint32_t> Master::checksum(std::uint8_t extension, std::uint32_t address, std::uint32_t size) {
   if (Status mta = set_mta(extension, address); !mta) return Failure{mta.error()};
-  std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::build_checksum), 0, 0, 0};
-  put_u32(request, size);
-  auto response = command(request, "BUILD_CHECKSUM");
-  if (!response) return Failure{response.error()};
-  if (response.value().size() < 8) return Failure{"BUILD_CHECKSUM: the response is too short"};
-  return get_u32(response.value(), 4);
+  const CommandPacket request =
+      CommandPacket{Command::build_checksum, properties_.byte_order}.u8(0).u8(0).u8(0).u32(size);
+  auto answer = exchange(request.packet(), "BUILD_CHECKSUM");
+  if (!answer) return Failure{answer.error()};
+  const std::vector<std::uint8_t>& bytes = answer.value();
+  PacketReader fields{bytes, properties_.byte_order};
+  if (bytes[0] == pid::error) {
+    // ERR_OUT_OF_RANGE says why: MTA_BLOCK_SIZE_ALIGN at byte 2, the largest block at byte 4.
+    if (bytes.size() >= 8 && bytes[1] == static_cast<std::uint8_t>(Error::out_of_range)) {
+      fields.skip(2);
+      const std::uint16_t alignment = fields.u16();
+      const std::uint32_t largest = fields.u32();
+      return Failure{error_message("BUILD_CHECKSUM", bytes) + ": the slave sums at most " + std::to_string(largest) +
+                     " bytes at once, from an address and of a size that are multiples of " +
+                     std::to_string(alignment)};
+    }
+    return Failure{error_message("BUILD_CHECKSUM", bytes)};
+  }
+  if (bytes.size() < 8) return too_short("BUILD_CHECKSUM");
+  fields.skip(4);
+  return fields.u32();
 }
 
 Result<std::vector<std::uint8_t>> Master::identification(std::uint8_t type) {
   const std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::get_id), type};
   auto response = command(request, "GET_ID");
   if (!response) return Failure{response.error()};
-  if (response.value().size() < 8) return Failure{"GET_ID: the response is too short"};
-  const std::uint32_t length = get_u32(response.value(), 4);
-  std::vector<std::uint8_t> identification;
-  while (identification.size() < length) {
-    const auto chunk =
-        static_cast<std::uint8_t>(std::min<std::size_t>(properties_.max_cto - 1U, length - identification.size()));
-    const std::vector<std::uint8_t> upload{static_cast<std::uint8_t>(Command::upload), chunk};
-    auto part = command(upload, "UPLOAD");
-    if (!part) return Failure{part.error()};
-    identification.insert(identification.end(), part.value().begin() + 1, part.value().end());
+  const std::vector<std::uint8_t>& bytes = response.value();
+  if (bytes.size() < id_response_header) return too_short("GET_ID");
+  PacketReader fields{bytes, properties_.byte_order};
+  fields.skip(1);
+  const std::uint8_t mode = fields.u8();
+  fields.skip(2);
+  const std::uint32_t length = fields.u32();
+  if ((mode & id_compressed_or_encrypted) != 0) {
+    return Failure{"GET_ID: the identification is compressed or encrypted, which this master cannot read"};
   }
-  return identification;
+  if ((mode & id_in_response) != 0) {
+    if (bytes.size() - id_response_header < length) {
+      return Failure{"GET_ID: the response holds " + std::to_string(bytes.size() - id_response_header) + " of the " +
+                     std::to_string(length) + " bytes it announces"};
+    }
+    const auto begin = bytes.begin() + static_cast<std::ptrdiff_t>(id_response_header);
+    return std::vector<std::uint8_t>(begin, begin + static_cast<std::ptrdiff_t>(length));
+  }
+  if (length > largest_identification) {
+    return Failure{"GET_ID: an identification of " + std::to_string(length) + " bytes is not believable"};
+  }
+  return upload_at_mta(length);
 }
 
 Status Master::unlock(std::uint8_t resource, const KeyFunction& key) {
@@ -186,10 +225,14 @@ Status Master::unlock(std::uint8_t resource, const KeyFunction& key) {
     const std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::get_seed), mode, resource};
     auto response = command(request, "GET_SEED");
     if (!response) return Failure{response.error()};
-    const std::size_t remaining = response.value().size() > 1 ? response.value()[1] : 0;
+    const std::vector<std::uint8_t>& bytes = response.value();
+    if (bytes.size() < 2) return too_short("GET_SEED");
+    const std::size_t remaining = bytes[1];
     if (remaining == 0 && seed.empty()) return done();  // not protected
-    seed.insert(seed.end(), response.value().begin() + 2, response.value().end());
-    if (response.value().size() - 2 >= remaining) break;
+    const std::size_t part = std::min<std::size_t>(remaining, properties_.max_cto - 2U);
+    if (bytes.size() < 2 + part) return too_short("GET_SEED");
+    seed.insert(seed.end(), bytes.begin() + 2, bytes.begin() + 2 + static_cast<std::ptrdiff_t>(part));
+    if (part >= remaining) break;
     mode = 1;
   }
   const std::vector<std::uint8_t> computed = key(resource, seed);
@@ -203,7 +246,8 @@ Status Master::unlock(std::uint8_t resource, const KeyFunction& key) {
     at += part;
     auto response = command(request, "UNLOCK");
     if (!response) return Failure{response.error()};
-    if (at == computed.size() && response.value().size() > 1 && (response.value()[1] & resource) != 0) {
+    if (response.value().size() < 2) return too_short("UNLOCK");
+    if (at == computed.size() && (response.value()[1] & resource) != 0) {
       return Failure{"UNLOCK: the resource is still locked"};
     }
   }
@@ -220,112 +264,8 @@ Result<std::uint8_t> Master::calibration_page(std::uint8_t mode, std::uint8_t se
   const std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::get_cal_page), mode, segment};
   auto response = command(request, "GET_CAL_PAGE");
   if (!response) return Failure{response.error()};
-  if (response.value().size() < 4) return Failure{"GET_CAL_PAGE: the response is too short"};
+  if (response.value().size() < 4) return too_short("GET_CAL_PAGE");
   return response.value()[3];
-}
-
-Status Master::start_daq(const std::vector<DaqListSetup>& lists) {
-  auto run = [this](std::vector<std::uint8_t> request, std::string_view name) -> Status {
-    auto response = command(request, name);
-    return response ? done() : Status{Failure{response.error()}};
-  };
-  if (Status freed = run({static_cast<std::uint8_t>(Command::free_daq)}, "FREE_DAQ"); !freed) return freed;
-  std::vector<std::uint8_t> alloc{static_cast<std::uint8_t>(Command::alloc_daq), 0};
-  put_u16(alloc, static_cast<std::uint16_t>(lists.size()));
-  if (Status allocated = run(alloc, "ALLOC_DAQ"); !allocated) return allocated;
-
-  // Split each list's entries into ODTs that fit MAX_DTO (the first carries the timestamp too).
-  std::vector<std::vector<std::vector<DaqEntry>>> odts(lists.size());
-  for (std::size_t list = 0; list < lists.size(); ++list) {
-    std::size_t used = 1 + timestamp_size;
-    odts[list].emplace_back();
-    for (const DaqEntry& entry : lists[list].entries) {
-      if (used + entry.size > properties_.max_dto) {
-        odts[list].emplace_back();
-        used = 1;
-      }
-      odts[list].back().push_back(entry);
-      used += entry.size;
-    }
-    std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::alloc_odt), 0};
-    put_u16(request, static_cast<std::uint16_t>(list));
-    request.push_back(static_cast<std::uint8_t>(odts[list].size()));
-    if (Status allocated = run(request, "ALLOC_ODT"); !allocated) return allocated;
-  }
-  for (std::size_t list = 0; list < lists.size(); ++list) {
-    for (std::size_t odt = 0; odt < odts[list].size(); ++odt) {
-      std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::alloc_odt_entry), 0};
-      put_u16(request, static_cast<std::uint16_t>(list));
-      request.push_back(static_cast<std::uint8_t>(odt));
-      request.push_back(static_cast<std::uint8_t>(odts[list][odt].size()));
-      if (Status allocated = run(request, "ALLOC_ODT_ENTRY"); !allocated) return allocated;
-    }
-  }
-  odts_by_pid_.clear();
-  assemblies_.assign(lists.size(), {});
-  for (std::size_t list = 0; list < lists.size(); ++list) {
-    for (std::size_t odt = 0; odt < odts[list].size(); ++odt) {
-      std::vector<std::uint8_t> pointer{static_cast<std::uint8_t>(Command::set_daq_ptr), 0};
-      put_u16(pointer, static_cast<std::uint16_t>(list));
-      pointer.push_back(static_cast<std::uint8_t>(odt));
-      pointer.push_back(0);
-      if (Status set = run(pointer, "SET_DAQ_PTR"); !set) return set;
-      for (const DaqEntry& entry : odts[list][odt]) {
-        std::vector<std::uint8_t> write{static_cast<std::uint8_t>(Command::write_daq), 0xFF, entry.size,
-                                        entry.extension};
-        put_u32(write, entry.address);
-        if (Status written = run(write, "WRITE_DAQ"); !written) return written;
-      }
-    }
-    std::vector<std::uint8_t> mode{static_cast<std::uint8_t>(Command::set_daq_list_mode), 0x10};  // timestamps
-    put_u16(mode, static_cast<std::uint16_t>(list));
-    put_u16(mode, lists[list].event);
-    mode.push_back(lists[list].prescaler);
-    mode.push_back(0);
-    if (Status set = run(mode, "SET_DAQ_LIST_MODE"); !set) return set;
-    std::vector<std::uint8_t> select{static_cast<std::uint8_t>(Command::start_stop_daq_list), 2};
-    put_u16(select, static_cast<std::uint16_t>(list));
-    auto selected = command(select, "START_STOP_DAQ_LIST");
-    if (!selected) return Failure{selected.error()};
-    const std::uint8_t first_pid = selected.value().size() > 1 ? selected.value()[1] : 0;
-    for (std::size_t odt = 0; odt < odts[list].size(); ++odt) {
-      std::size_t payload = 0;
-      for (const DaqEntry& entry : odts[list][odt]) payload += entry.size;
-      const std::size_t pid = first_pid + odt;
-      if (odts_by_pid_.size() <= pid) odts_by_pid_.resize(pid + 1);
-      odts_by_pid_[pid] = {list, odt == 0, odt + 1 == odts[list].size(), payload};
-    }
-  }
-  samples_.clear();
-  return run({static_cast<std::uint8_t>(Command::start_stop_synch), 1}, "START_STOP_SYNCH");
-}
-
-Status Master::stop_daq() {
-  const std::vector<std::uint8_t> request{static_cast<std::uint8_t>(Command::start_stop_synch), 0};
-  auto response = command(request, "START_STOP_SYNCH");
-  return response ? done() : Status{Failure{response.error()}};
-}
-
-Result<std::vector<DaqSample>> Master::receive_samples(std::chrono::milliseconds wait) {
-  const auto deadline = std::chrono::steady_clock::now() + wait;
-  while (samples_.empty()) {
-    const auto left =
-        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
-    auto received = channel_->receive(left.count() > 0 ? left : std::chrono::milliseconds{0});
-    if (!received) return Failure{received.error()};
-    if (!received.value()) break;
-    take_asynchronous(std::move(*received.value()));
-  }
-  // And whatever else has arrived already, but no longer than asked: a flood of samples must not keep us here.
-  while (std::chrono::steady_clock::now() < deadline) {
-    auto received = channel_->receive(std::chrono::milliseconds{0});
-    if (!received) return Failure{received.error()};
-    if (!received.value()) break;
-    take_asynchronous(std::move(*received.value()));
-  }
-  std::vector<DaqSample> samples(std::make_move_iterator(samples_.begin()), std::make_move_iterator(samples_.end()));
-  samples_.clear();
-  return samples;
 }
 
 }  // namespace duet::xcp::host

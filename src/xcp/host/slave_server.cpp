@@ -32,6 +32,7 @@ SlaveServer::~SlaveServer() { stop(); }
 
 Status SlaveServer::start(const Options& options) {
   protocol_ = options.protocol;
+  pad_packets_ = options.pad_packets;
   listener_ = ::socket(AF_INET, (protocol_ == Protocol::tcp ? SOCK_STREAM : SOCK_DGRAM) | SOCK_CLOEXEC, 0);
   if (listener_ < 0) return Failure{std::string{"socket: "} + std::strerror(errno)};
   const int on = 1;
@@ -88,6 +89,11 @@ void SlaveServer::drop_master() {
 }
 
 void SlaveServer::send_packet(std::span<const std::uint8_t> packet) {
+  if (pad_packets_ && packet.size() % 4 != 0) {
+    padded_.assign(packet.begin(), packet.end());
+    padded_.resize((packet.size() + 3) / 4 * 4, 0);
+    packet = padded_;
+  }
   const std::size_t frame_size = ethernet_framing.frame_size(packet.size());
   if (protocol_ == Protocol::udp && outgoing_.size() + frame_size > udp_datagram) flush();
   const std::size_t at = outgoing_.size();

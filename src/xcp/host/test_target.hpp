@@ -1,9 +1,10 @@
 #pragma once
 // A slave on the PC for tests: signals, parameters with two pages, DAQ storage, seed & key on DAQ (the key is the
-// seed's complement), an XCP-on-Ethernet server, and a step() that plays a model: event 0 every step, event 1
-// every second step. Test code only.
+// seed's complement), an XCP-on-Ethernet server, a clock, and a step() that plays a model: event 0 every step,
+// event 1 every second step, the clock `ticks_per_step` further each step. Test code only.
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -22,6 +23,10 @@ inline std::uint32_t lock_test_queue() {
   return 0;
 }
 inline void unlock_test_queue(std::uint32_t) { test_queue_mutex.unlock(); }
+
+// The slave's clock (a timestamp function has no context, so there is one clock per process).
+inline std::atomic<std::uint32_t> test_target_clock{0};
+inline std::uint32_t read_test_target_clock() { return test_target_clock.load(std::memory_order_relaxed); }
 
 inline std::size_t make_seed(std::uint8_t, std::span<std::uint8_t> seed) {
   for (std::size_t byte = 0; byte < 8; ++byte) seed[byte] = static_cast<std::uint8_t>(0xA0 + byte);
@@ -80,7 +85,11 @@ struct TestTarget {
                                    .download_buffer = download_buffer,
                                    .events = events,
                                    .daq = {lists, odts, entries},
-                                   .queue = &queue};
+                                   .queue = &queue,
+                                   .timestamp = read_test_target_clock};
+  // The clock at step n is clock_start + n * ticks_per_step (wrapping at 32 bits): 1 ms per step in 1 us ticks.
+  std::uint32_t clock_start = 0;
+  std::uint32_t ticks_per_step = 1000;
   Slave slave{configuration};
   std::mutex model_mutex;  // the model's tasks run under it; the server's commands too
   SlaveServer server{slave, queue, [this](const std::function<void()>& work) {
@@ -92,6 +101,7 @@ struct TestTarget {
   void step(std::uint32_t number) {
     {
       const std::lock_guard lock{model_mutex};
+      test_target_clock.store(clock_start + number * ticks_per_step, std::memory_order_relaxed);
       signals.counter = number;
       signals.twice = static_cast<std::uint16_t>(2 * number);
       slave.on_event(0);

@@ -23,6 +23,9 @@ enum class IdentificationField : std::uint8_t {
 // Bytes the identification field takes at the start of every DAQ packet.
 constexpr std::size_t identification_size(IdentificationField field) { return static_cast<std::size_t>(field) + 1; }
 
+// Bytes of the slave's clock in the first DAQ packet of a sample (GET_DAQ_RESOLUTION_INFO's TIMESTAMP_MODE bits 0-2).
+enum class TimestampSize : std::uint8_t { byte = 1, word = 2, dword = 4 };
+
 // An event channel, as GET_DAQ_EVENT_INFO and the A2L describe it.
 struct EventChannel {
   std::string_view name;

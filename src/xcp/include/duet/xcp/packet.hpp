@@ -1,6 +1,7 @@
 #pragma once
-// Reading and writing the fields of XCP packets. Multi-byte fields are little-endian (the slave announces Intel byte
-// order in CONNECT). Reading past the end yields zeros and marks the reader, so handlers check lengths first.
+// Reading and writing the fields of XCP packets. Multi-byte fields are in the slave's byte order (CONNECT's
+// COMM_MODE_BASIC bit 0): Intel (little-endian, the default) or Motorola (big-endian). Reading past the end yields
+// zeros, so handlers check lengths first.
 
 #include <cstddef>
 #include <cstdint>
@@ -8,9 +9,12 @@
 
 namespace duet::xcp {
 
+enum class ByteOrder : std::uint8_t { intel = 0, motorola = 1 };
+
 class PacketReader {
  public:
-  constexpr explicit PacketReader(std::span<const std::uint8_t> bytes) : bytes_(bytes) {}
+  constexpr explicit PacketReader(std::span<const std::uint8_t> bytes, ByteOrder order = ByteOrder::intel)
+      : bytes_(bytes), order_(order) {}
 
   [[nodiscard]] constexpr std::size_t size() const { return bytes_.size(); }
   [[nodiscard]] constexpr std::size_t remaining() const { return bytes_.size() - position_; }
@@ -18,12 +22,16 @@ class PacketReader {
 
   constexpr std::uint8_t u8() { return position_ < bytes_.size() ? bytes_[position_++] : 0; }
   constexpr std::uint16_t u16() {
-    const std::uint8_t low = u8();
-    return static_cast<std::uint16_t>(low | (u8() << 8U));
+    const std::uint8_t first = u8();
+    const std::uint8_t second = u8();
+    return order_ == ByteOrder::intel ? static_cast<std::uint16_t>(first | (second << 8U))
+                                      : static_cast<std::uint16_t>((first << 8U) | second);
   }
   constexpr std::uint32_t u32() {
-    const std::uint16_t low = u16();
-    return low | (static_cast<std::uint32_t>(u16()) << 16U);
+    const std::uint16_t first = u16();
+    const std::uint16_t second = u16();
+    return order_ == ByteOrder::intel ? first | (static_cast<std::uint32_t>(second) << 16U)
+                                      : (static_cast<std::uint32_t>(first) << 16U) | second;
   }
   // The next `count` bytes, or fewer if the packet ends first.
   constexpr std::span<const std::uint8_t> bytes(std::size_t count) {
@@ -36,11 +44,13 @@ class PacketReader {
  private:
   std::span<const std::uint8_t> bytes_;
   std::size_t position_ = 0;
+  ByteOrder order_;
 };
 
 class PacketWriter {
  public:
-  constexpr explicit PacketWriter(std::span<std::uint8_t> buffer) : buffer_(buffer) {}
+  constexpr explicit PacketWriter(std::span<std::uint8_t> buffer, ByteOrder order = ByteOrder::intel)
+      : buffer_(buffer), order_(order) {}
 
   constexpr PacketWriter& u8(std::uint8_t value) {
     if (size_ < buffer_.size()) {
@@ -51,10 +61,14 @@ class PacketWriter {
     return *this;
   }
   constexpr PacketWriter& u16(std::uint16_t value) {
-    return u8(static_cast<std::uint8_t>(value)).u8(static_cast<std::uint8_t>(value >> 8U));
+    const auto low = static_cast<std::uint8_t>(value);
+    const auto high = static_cast<std::uint8_t>(value >> 8U);
+    return order_ == ByteOrder::intel ? u8(low).u8(high) : u8(high).u8(low);
   }
   constexpr PacketWriter& u32(std::uint32_t value) {
-    return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
+    const auto low = static_cast<std::uint16_t>(value);
+    const auto high = static_cast<std::uint16_t>(value >> 16U);
+    return order_ == ByteOrder::intel ? u16(low).u16(high) : u16(high).u16(low);
   }
   constexpr PacketWriter& bytes(std::span<const std::uint8_t> values) {
     for (std::uint8_t value : values) u8(value);
@@ -71,6 +85,7 @@ class PacketWriter {
 
  private:
   std::span<std::uint8_t> buffer_;
+  ByteOrder order_;
   std::size_t size_ = 0;
   bool overflowed_ = false;
 };

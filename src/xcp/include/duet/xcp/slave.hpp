@@ -41,8 +41,14 @@ struct SlaveConfiguration {
   std::span<const CalibrationSegment> segments;  // paged calibration memory, looked up before `memory`
   std::uint8_t max_cto = 248;                    // at most 255; a multiple of 8 suits every transport
   std::uint16_t max_dto = 1024;
+  // Multi-byte fields of commands, responses and DAQ packets (COMM_MODE_BASIC bit 0). Memory contents are not
+  // reordered: they stay as the firmware keeps them (the A2L's BYTE_ORDER says how).
+  ByteOrder byte_order = ByteOrder::intel;
   std::string_view identification;    // GET_ID type 1: the A2L file's name without path and extension
   std::span<const std::uint8_t> a2l;  // GET_ID type 4: the A2L itself, if the firmware carries it
+  // GET_ID types 0 and 1 answer with the identification inside the response (mode bit 0) when it fits in MAX_CTO,
+  // rather than through the MTA for UPLOAD. The A2L itself always goes through the MTA.
+  bool identification_in_response = false;
   ChecksumType checksum_type = ChecksumType::crc_16_ccitt;
   std::uint32_t max_checksum_block = 0x0010'0000;
   std::uint8_t protected_resources = 0;  // locked at every CONNECT until UNLOCK (resource:: bits)
@@ -57,9 +63,12 @@ struct SlaveConfiguration {
   // clock that stamps them (in timestamp_unit_ns nanoseconds per tick). Without storage the slave offers no DAQ.
   std::span<const EventChannel> events;
   DaqStorage daq;
+  // How a DAQ packet names its ODT and DAQ list (GET_DAQ_PROCESSOR_INFO's DAQ_KEY_BYTE bits 6-7).
+  IdentificationField identification_field = IdentificationField::absolute;
   TransmitQueue* queue = nullptr;
   std::uint32_t (*timestamp)() = nullptr;
-  std::uint8_t timestamp_unit = 3;  // 0 = 1 ns, 1 = 10 ns, 2 = 100 ns, 3 = 1 us, ...
+  TimestampSize timestamp_size = TimestampSize::dword;  // a DAQ packet carries the clock's low bytes
+  std::uint8_t timestamp_unit = 3;                      // 0 = 1 ns, 1 = 10 ns, 2 = 100 ns, 3 = 1 us, ...
   std::uint16_t timestamp_ticks = 1;
 };
 
@@ -171,6 +180,14 @@ class Slave {
   [[nodiscard]] bool daq_running() const;
   void stop_all_daq();
   [[nodiscard]] std::size_t odt_payload(const DaqList& list, std::size_t odt_index) const;
+  // Samples every running DAQ list of `event`; `make_header` gives what begins each sample's packets.
+  template <typename MakeHeader>
+  void sample_event(std::uint16_t event, MakeHeader make_header);
+  static void sample_in_usual_layout(Slave& slave, std::uint16_t event);  // absolute ODT numbers, 4-byte Intel stamps
+  static void sample_in_other_layout(Slave& slave, std::uint16_t event);
+  static void sample_nothing(Slave& slave, std::uint16_t event);
+  // Bytes before the entries in a sample's first packet: the identification field and the timestamp.
+  [[nodiscard]] std::size_t first_packet_header_size() const;
 
   // Memory at an XCP address: a calibration segment's page XCP chose, else a declared region; nullptr if neither
   // holds all `size` bytes (readable, or writable).
@@ -210,6 +227,8 @@ class Slave {
   std::uint16_t daq_pointer_entry_ = 0;  // absolute entry index
   std::uint16_t daq_pointer_end_ = 0;    // one past the ODT's last entry; equal to the pointer when not set
   std::array<std::uint8_t, max_segments> xcp_page_{};  // per segment: the page XCP reads and writes
+  // on_event()'s sampling loop for the configured DAQ packet layout (chosen at CONNECT, when the queue is known).
+  std::atomic<void (*)(Slave&, std::uint16_t)> sample_{sample_nothing};
   std::atomic<bool> overload_pending_{false};
   std::atomic<std::uint32_t> overloads_{0};
   std::array<std::uint8_t, max_packet + 1> response_{};

@@ -27,6 +27,9 @@ class SlaveServer {
     Protocol protocol = Protocol::tcp;
     std::string address = "127.0.0.1";
     std::uint16_t port = 0;  // 0: any free port; see port()
+    // Fill bytes after each packet up to a multiple of 4 bytes, counted in LEN, as some slaves send them on Ethernet:
+    // the master must take a packet longer than its layout.
+    bool pad_packets = false;
   };
 
   SlaveServer(Slave& slave, TransmitQueue& queue, Exclusive exclusive = {});
@@ -54,6 +57,7 @@ class SlaveServer {
   TransmitQueue& queue_;
   Exclusive exclusive_;
   Protocol protocol_ = Protocol::tcp;
+  bool pad_packets_ = false;
   int listener_ = -1;
   int master_ = -1;
   int wake_ = -1;
@@ -61,6 +65,7 @@ class SlaveServer {
   std::uint16_t counter_ = 0;
   std::vector<std::uint8_t> outgoing_;
   std::vector<std::uint8_t> packet_ = std::vector<std::uint8_t>(0x10000);  // one packet out of the queue
+  std::vector<std::uint8_t> padded_;                                       // one packet and its fill bytes
   std::vector<std::uint8_t> decoder_buffer_;
   FrameDecoder decoder_;
   std::vector<std::uint8_t> udp_peer_;  // sockaddr of the UDP master
