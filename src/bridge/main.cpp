@@ -57,10 +57,15 @@ std::string relay_status_json(const duet::bridge::Relay& relay) {
                           {"bytes_to_master", counters.bytes_to_master},
                           {"bytes_to_slave", counters.bytes_to_slave},
                           {"daq_frames_dropped", counters.daq_frames_dropped},
+                          {"answers_dropped", counters.answers_dropped},
+                          {"frames_without_master", counters.frames_without_master},
+                          {"commands_refused", counters.commands_refused},
+                          {"commands_unanswered", counters.commands_unanswered},
                           {"garbage_bytes", counters.garbage_bytes},
                           {"channel_opens", counters.channel_opens},
                           {"masters_served", counters.masters_served},
                           {"masters_refused", counters.masters_refused},
+                          {"responses", counters.responses},
                           {"latency_mean_us", counters.latency_mean_us},
                           {"latency_max_us", counters.latency_max_us}}}}
       .dump();
