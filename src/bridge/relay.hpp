@@ -5,7 +5,7 @@
 //   pass unchanged.
 // - One master at a time: a second connection is closed at once, and logged; on UDP, the master is the peer of the
 //   first datagram while there is none, datagrams from others are dropped (logged once), and it is gone after its
-//   DISCONNECT has been answered or after 30 s of silence.
+//   DISCONNECT has been answered (at once if the slave will not answer it) or after 30 s of silence.
 // - The session is watched (session_tracker.hpp): a master that goes away (cleanly or not) while the slave's session
 //   is open is disconnected on its behalf, so that DAQ stops; the answers owed to it and to that DISCONNECT go to
 //   nobody, and the next master's commands wait until they have come (or given up after a while), so that no answer

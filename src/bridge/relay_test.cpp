@@ -294,6 +294,22 @@ TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
   EXPECT_TRUE(next.upload(0, 0x1000, 4).ok());
 }
 
+TEST_F(BridgeEndToEnd, AUdpMasterWhoseDisconnectNoSlaveAnswersIsForgottenAtOnce) {
+  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+  ASSERT_TRUE(channel.ok()) << channel.error();
+  const std::array<std::uint8_t, 1> disconnect{0xFE};  // and no session: the slave will not answer it
+  ASSERT_TRUE(channel.value()->send(disconnect).ok());
+  const auto forgotten_by = std::chrono::steady_clock::now() + std::chrono::seconds{1};
+  while ((relay->counters().masters_served == 0 || relay->master_connected()) &&
+         std::chrono::steady_clock::now() < forgotten_by) {
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  }
+  EXPECT_EQ(relay->counters().masters_served, 1U);
+  EXPECT_FALSE(relay->master_connected());  // not after 30 s of silence
+  Master next = connect();
+  EXPECT_TRUE(next.connect().ok());
+}
+
 TEST_F(BridgeEndToEnd, GarbageFromTheMasterIsSkippedAndCommandsWorkAfterIt) {
   const int socket = connect_raw(relay->port());
   ASSERT_GE(socket, 0);
