@@ -74,8 +74,8 @@ class Child {
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
 
-  void write_line(const std::string& line) { write(line + "\n"); }
-  void write(const std::string& text) {
+  void write_line(const std::string& line) const { write(line + "\n"); }
+  void write(const std::string& text) const {
     [[maybe_unused]] const ssize_t written = ::write(stdin_, text.data(), text.size());
   }
   // Ends its standard input: it reads end of file.

@@ -46,7 +46,7 @@ struct RelayOptions {
   std::uint16_t listen_port = 5555;  // 0: any free port
   std::size_t master_queue_limit = 1U << 20;
   // Commands waiting to be written to the channel or held back (masters wait for answers: little ever waits).
-  std::size_t slave_queue_limit = 64 * 1024;
+  std::size_t slave_queue_limit = std::size_t{64} * 1024;
   // The kernel's send buffer towards the master: with the queue, all a slow master can hold up (0: the kernel's).
   int master_send_buffer = 256 * 1024;
   std::size_t channel_chunk = 496;

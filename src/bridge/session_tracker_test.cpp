@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <vector>
 
 #include "duet/xcp/protocol.hpp"
@@ -13,18 +14,18 @@ namespace {
 using std::chrono::milliseconds;
 using Packet = std::vector<std::uint8_t>;
 
-const SessionTracker::Clock::time_point start{};
+constexpr SessionTracker::Clock::time_point start{};
 SessionTracker::Clock::time_point at(int milliseconds_in) { return start + milliseconds{milliseconds_in}; }
 
-const Packet connect{0xFF, 0x00};
-const Packet disconnect{0xFE};
-const Packet get_status{0xFD};
-const Packet unlock{0xF7, 0x02, 0x12, 0x34};
-const Packet positive{0xFF};
-const Packet connect_response{0xFF, 0x05, 0x00, 0x08, 0x08, 0x00, 0x01, 0x01};
-const Packet access_locked{0xFE, 0x25};
-const Packet session_terminated{0xFD, 0x07};
-const Packet daq{0x00, 0x01, 0x02, 0x03, 0x04};
+constexpr std::array<std::uint8_t, 2> connect{0xFF, 0x00};
+constexpr std::array<std::uint8_t, 1> disconnect{0xFE};
+constexpr std::array<std::uint8_t, 1> get_status{0xFD};
+constexpr std::array<std::uint8_t, 4> unlock{0xF7, 0x02, 0x12, 0x34};
+constexpr std::array<std::uint8_t, 1> positive{0xFF};
+constexpr std::array<std::uint8_t, 8> connect_response{0xFF, 0x05, 0x00, 0x08, 0x08, 0x00, 0x01, 0x01};
+constexpr std::array<std::uint8_t, 2> access_locked{0xFE, 0x25};
+constexpr std::array<std::uint8_t, 2> session_terminated{0xFD, 0x07};
+constexpr std::array<std::uint8_t, 5> daq{0x00, 0x01, 0x02, 0x03, 0x04};
 
 class SessionTrackerTest : public ::testing::Test {
  protected:
