@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
+#include <cstring>
 #include <iostream>
 #include <mutex>
 #include <optional>
@@ -65,12 +67,15 @@ class AppService::Impl {
     if (dashboard_) {
       if (Status started = dashboard_->start(); !started) return Failure{"dashboard: " + started.error()};
     }
-    if (options_.csv) read_input();
     open_channel();
     return done();
   }
 
-  void run() { io_.run(); }
+  Status run() {
+    io_.run();
+    if (csv_failure_) return Failure{*csv_failure_};
+    return done();
+  }
   void stop() {
     asio::post(io_, [this] { io_.stop(); });
   }
@@ -87,6 +92,7 @@ class AppService::Impl {
                      {"frames_lost", frames_lost_.load()},
                      {"garbage_bytes", garbage_bytes_.load()},
                      {"malformed_packets", malformed_.load()},
+                     {"input_lines_rejected", input_lines_rejected_.load()},
                      {"clients", dashboard_ ? dashboard_->clients() : 0},
                      {"samples_dropped_for_clients", dashboard_ ? dashboard_->dropped_for_clients() : 0}}}};
     {
@@ -211,8 +217,9 @@ class AppService::Impl {
       for (const auto& item : description.telemetry) {
         header += "," + item.name + (item.unit.empty() ? "" : " [" + item.unit + "]");
       }
-      if (header != csv_header_) std::cout << header << '\n' << std::flush;  // a repeated description: no new header
+      if (header != csv_header_) write_csv(header);  // a repeated description: no new header
       csv_header_ = header;
+      if (!reading_input_) read_input();
     }
   }
 
@@ -224,8 +231,18 @@ class AppService::Impl {
       line.precision(9);  // a float's every digit
       line << sample.sample;
       for (const double value : sample.values) line << ',' << value;
-      std::cout << line.str() << '\n' << std::flush;
+      write_csv(line.str());
     }
+  }
+
+  // CSV nobody can read is data lost without a word: the service stops and says why (standard output closed by its
+  // reader, a full disk).
+  void write_csv(const std::string& line) {
+    if (csv_failure_) return;
+    std::cout << line << '\n' << std::flush;
+    if (std::cout) return;
+    csv_failure_ = "CSV output on standard output: " + std::string{std::strerror(errno)};
+    io_.stop();
   }
 
   void on_parameter(const ParameterReport& report) {
@@ -247,19 +264,44 @@ class AppService::Impl {
   }
 
   // `name=value` lines on standard input set parameters (CSV mode, for scripts).
+  // Only once the application has described itself: before, no line could name a parameter.
   void read_input() {
+    reading_input_ = true;
     error_code error;
     input_.assign(::dup(STDIN_FILENO), error);
-    if (error) return;  // a regular file or nothing: no sets from standard input
+    if (error) return;  // no standard input (closed): no sets from it
     read_input_line();
   }
   void read_input_line() {
     asio::async_read_until(input_, asio::dynamic_buffer(input_line_, max_input_line), '\n',
                            [this](error_code error, std::size_t length) {
-                             if (error) return;  // end of input, or a line too long: stop listening
+                             ++input_line_number_;
+                             if (error == asio::error::not_found) {  // no newline in max_input_line bytes
+                               reject_input_line("longer than " + std::to_string(max_input_line) + " bytes");
+                               input_line_.clear();
+                               return skip_rest_of_line();
+                             }
+                             if (error) {  // a last line without a newline still counts
+                               if (!input_line_.empty()) set_from_line(input_line_);
+                               if (error != asio::error::eof)
+                                 log("standard input: " + error.message() + "; not read further");
+                               return;
+                             }
                              std::string line = input_line_.substr(0, length - 1);
                              input_line_.erase(0, length);
                              set_from_line(line);
+                             read_input_line();
+                           });
+  }
+  void skip_rest_of_line() {
+    asio::async_read_until(input_, asio::dynamic_buffer(input_line_, max_input_line), '\n',
+                           [this](error_code error, std::size_t length) {
+                             if (error == asio::error::not_found) {
+                               input_line_.clear();
+                               return skip_rest_of_line();
+                             }
+                             if (error) return;  // end of input
+                             input_line_.erase(0, length);
                              read_input_line();
                            });
   }
@@ -268,13 +310,16 @@ class AppService::Impl {
     if (line.empty()) return;
     double value = 0;
     std::istringstream number{equals == std::string::npos ? std::string{} : line.substr(equals + 1)};
-    if (equals == std::string::npos || !(number >> value)) {
-      log("standard input: '" + line + "': expected name=value");
-      return;
-    }
+    if (equals == std::string::npos || !(number >> value))
+      return reject_input_line("'" + line + "': expected name=value");
+    if (!channel_.is_open()) return reject_input_line("the application channel is not open");
     auto request = peer_.set_request(line.substr(0, equals), value);
-    if (!request) return log("standard input: " + request.error());
+    if (!request) return reject_input_line(request.error());
     send_to_channel(request.value());
+  }
+  void reject_input_line(const std::string& problem) {
+    ++input_lines_rejected_;
+    log("standard input line " + std::to_string(input_line_number_) + ": " + problem + "; ignored");
   }
 
   AppServiceOptions options_;
@@ -283,6 +328,9 @@ class AppService::Impl {
   asio::posix::stream_descriptor channel_;
   asio::posix::stream_descriptor input_;
   std::string input_line_;
+  bool reading_input_ = false;
+  std::uint64_t input_line_number_ = 0;
+  std::optional<std::string> csv_failure_;
   std::array<std::uint8_t, 4096> read_buffer_{};
   std::vector<std::uint8_t> to_channel_;
   bool writing_channel_ = false;
@@ -296,13 +344,14 @@ class AppService::Impl {
   json executive_;  // the last account, for status (read from other threads too)
 
   std::atomic<bool> channel_open_{false};
-  std::atomic<std::uint64_t> channel_opens_{0}, samples_{0}, frames_lost_{0}, garbage_bytes_{0}, malformed_{0};
+  std::atomic<std::uint64_t> channel_opens_{0}, samples_{0}, frames_lost_{0}, garbage_bytes_{0}, malformed_{0},
+      input_lines_rejected_{0};
 };
 
 AppService::AppService(AppServiceOptions options) : impl_(std::make_unique<Impl>(std::move(options))) {}
 AppService::~AppService() = default;
 Status AppService::start() { return impl_->start(); }
-void AppService::run() { impl_->run(); }
+Status AppService::run() { return impl_->run(); }
 void AppService::stop() { impl_->stop(); }
 std::uint16_t AppService::websocket_port() const { return impl_->port(); }
 std::string AppService::status() const {

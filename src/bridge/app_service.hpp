@@ -4,7 +4,8 @@
 //   - to the dashboard (docs/DASHBOARD.md): its page over HTTP and, over WebSocket on the same port, JSON messages
 //     (the description, samples, parameter reports, status, the recorder); clients set parameters by name;
 //   - as CSV on standard output (a header from the description, then one line per sample), taking `name=value` lines
-//     on standard input as parameter sets.
+//     on standard input as parameter sets. A line that sets nothing (malformed, unknown, too long) is reported with
+//     its number and counted, and the lines after it still count; CSV that cannot be written ends the service.
 // The channel is retried when it goes away, and asked for its description whenever it (re)opens. Every queue is
 // bounded: a client that does not keep up loses samples (counted), never parameter reports or answers.
 
@@ -42,8 +43,8 @@ class AppService {
 
   // Binds the WebSocket listener and tries the channel (a channel that is not there yet is retried).
   Status start();
-  // Serves until stop(), from any thread.
-  void run();
+  // Serves until stop(), from any thread, or until the CSV output fails (then the failure says why).
+  Status run();
   void stop();
 
   [[nodiscard]] std::uint16_t websocket_port() const;

@@ -33,7 +33,7 @@ class AppServiceTest : public ::testing::Test {
     options.extra_status = [] { return std::string{R"({"xcp": {"frames_to_master": 7}})"}; };
     service = std::make_unique<AppService>(options);
     ASSERT_TRUE(service->start().ok());
-    thread = std::thread{[this] { service->run(); }};
+    thread = std::thread{[this] { EXPECT_TRUE(service->run().ok()); }};
   }
   void TearDown() override {
     service->stop();
@@ -142,7 +142,7 @@ TEST(AppServiceRestart, ARestartedApplicationIsDescribedAgainAndServes) {
   options.websocket_port = 0;
   AppService service{options};
   ASSERT_TRUE(service.start().ok());
-  std::thread thread{[&service] { service.run(); }};
+  std::thread thread{[&service] { EXPECT_TRUE(service.run().ok()); }};
 
   WebSocketClient client{service.websocket_port()};
   ASSERT_TRUE(client.next("description"));

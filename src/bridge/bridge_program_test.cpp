@@ -74,9 +74,19 @@ class Child {
   Child(const Child&) = delete;
   Child& operator=(const Child&) = delete;
 
-  void write_line(const std::string& line) {
-    const std::string text = line + "\n";
+  void write_line(const std::string& line) const { write(line + "\n"); }
+  void write(const std::string& text) const {
     [[maybe_unused]] const ssize_t written = ::write(stdin_, text.data(), text.size());
+  }
+  // Ends its standard input: it reads end of file.
+  void close_input() {
+    ::close(stdin_);
+    stdin_ = -1;
+  }
+  // Stops reading its standard output, as a reader that goes away: its next write there fails.
+  void close_output() {
+    ::close(stdout_);
+    stdout_ = -1;
   }
   // Reads standard output until `lines` complete lines have come (or the time is up).
   std::vector<std::string> read_lines(std::size_t lines, std::chrono::seconds patience) {
@@ -260,6 +270,7 @@ TEST(BridgeProgram, DuetXcpThroughTheBridgeReadsWritesAndRecordsTenSecondsWithou
   EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
   EXPECT_NE(bridge.output().find("stopped; channel open"), std::string::npos) << bridge.output();
   EXPECT_NE(bridge.output().find("DAQ frames dropped 0"), std::string::npos) << bridge.output();
+  EXPECT_NE(bridge.output().find("commands refused 0, unanswered 0"), std::string::npos) << bridge.output();
 }
 
 // What the kernel says of a process: its resident memory in kB and its open descriptors.
@@ -358,6 +369,69 @@ TEST(BridgeProgram, OffersTheApplicationChannelAsCsvAndOverWebSocket) {
 
   EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
   EXPECT_NE(bridge.output().find("stopped; application channel"), std::string::npos) << bridge.output();
+}
+
+// The CSV service alone, on the robot's application on a pty; the bridge has printed the CSV header when it returns.
+struct CsvBridge {
+  PtyApplication application;
+  std::optional<Child> bridge;
+};
+void start_csv_bridge(CsvBridge& csv, const std::vector<std::string>& program) {
+  csv.application.start();
+  std::vector<std::string> arguments = program;
+  arguments.insert(arguments.end(), {"--app-channel", "tty:" + csv.application.path(), "--no-websocket", "--csv"});
+  csv.bridge.emplace(arguments);
+  ASSERT_EQ(csv.bridge->read_lines(1, std::chrono::seconds{10}).size(), 1U) << csv.bridge->output();
+}
+
+TEST(BridgeProgram, AnOverLongInputLineIsReportedCountedAndSkipped) {
+  auto arguments = bridge_command();
+  if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
+  CsvBridge csv;
+  ASSERT_NO_FATAL_FAILURE(start_csv_bridge(csv, *arguments));
+  Child& bridge = *csv.bridge;
+  bridge.write_line(std::string(5000, 'x'));
+  bridge.write_line("P=0.05");
+  bridge.write("Q=1\nI=0.01");  // the last line without a newline, then the end of the input
+  bridge.close_input();
+  EXPECT_FALSE(bridge.wait_for("standard input line 1: longer than 4096 bytes", std::chrono::seconds{10}).empty() &&
+               bridge.output().find("standard input line 1: longer") == std::string::npos)
+      << bridge.output();
+  EXPECT_FALSE(bridge.wait_for("parameter I = ", std::chrono::seconds{10}).empty()) << bridge.output();
+  EXPECT_NE(bridge.output().find("standard input line 3: the firmware has no parameter named 'Q'"), std::string::npos)
+      << bridge.output();
+  EXPECT_FLOAT_EQ(csv.application.p, 0.05F);  // the lines after the long one still count
+  EXPECT_FLOAT_EQ(csv.application.i, 0.01F);
+  EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
+  EXPECT_NE(bridge.output().find("\"input_lines_rejected\":2"), std::string::npos) << bridge.output();
+}
+
+TEST(BridgeProgram, SetsGivenBeforeTheApplicationDescribedItselfWaitForIt) {
+  auto arguments = bridge_command();
+  if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
+  PtyApplication application;
+  application.start();
+  arguments->insert(arguments->end(), {"--app-channel", "tty:" + application.path(), "--no-websocket", "--csv"});
+  Child bridge{*arguments};
+  bridge.write_line("D=0.02");  // at once, as from a file: before the description has come
+  bridge.close_input();
+  EXPECT_FALSE(bridge.wait_for("parameter D = ", std::chrono::seconds{10}).empty()) << bridge.output();
+  EXPECT_FLOAT_EQ(application.d, 0.02F);
+  EXPECT_EQ(bridge.terminate(), 0) << bridge.output();
+  EXPECT_NE(bridge.output().find("\"input_lines_rejected\":0"), std::string::npos) << bridge.output();
+}
+
+TEST(BridgeProgram, CsvThatCannotBeWrittenStopsTheBridgeWithAnError) {
+  auto arguments = bridge_command();
+  if (!arguments) GTEST_SKIP() << "no DUET_BRIDGE_PROGRAM to run";
+  CsvBridge csv;
+  ASSERT_NO_FATAL_FAILURE(start_csv_bridge(csv, *arguments));
+  Child& bridge = *csv.bridge;
+  bridge.close_output();  // the reader goes away; the next sample (at 100 Hz) cannot be written
+  EXPECT_EQ(bridge.wait_for_exit(), 1) << bridge.output();
+  EXPECT_NE(bridge.output().find("duet-bridge: CSV output on standard output: Broken pipe"), std::string::npos)
+      << bridge.output();
+  EXPECT_NE(bridge.output().find("duet-bridge: stopped; application channel"), std::string::npos) << bridge.output();
 }
 
 }  // namespace

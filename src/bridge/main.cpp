@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <signal.h>
 #include <sys/utsname.h>
+#include <unistd.h>
 
 #include <exception>
 #include <iostream>
@@ -57,10 +58,15 @@ std::string relay_status_json(const duet::bridge::Relay& relay) {
                           {"bytes_to_master", counters.bytes_to_master},
                           {"bytes_to_slave", counters.bytes_to_slave},
                           {"daq_frames_dropped", counters.daq_frames_dropped},
+                          {"answers_dropped", counters.answers_dropped},
+                          {"frames_without_master", counters.frames_without_master},
+                          {"commands_refused", counters.commands_refused},
+                          {"commands_unanswered", counters.commands_unanswered},
                           {"garbage_bytes", counters.garbage_bytes},
                           {"channel_opens", counters.channel_opens},
                           {"masters_served", counters.masters_served},
                           {"masters_refused", counters.masters_refused},
+                          {"responses", counters.responses},
                           {"latency_mean_us", counters.latency_mean_us},
                           {"latency_max_us", counters.latency_max_us}}}}
       .dump();
@@ -151,6 +157,8 @@ int run(int argc, char** argv) {
     service.emplace(options);
   }
 
+  // A reader of the CSV (or a peer of a channel) that goes away is an error to report, not a silent end.
+  ::signal(SIGPIPE, SIG_IGN);
   // Signals go to the relay's signalfd, or to sigwait here; no thread may take them the default way.
   sigset_t signals;
   sigemptyset(&signals);
@@ -164,6 +172,7 @@ int run(int argc, char** argv) {
     }
   }
   std::thread service_thread;
+  duet::Status service_ended = duet::done();
   if (service) {
     if (auto started = service->start(); !started) {
       std::cerr << "duet-bridge: " << started.error() << '\n';
@@ -175,7 +184,11 @@ int run(int argc, char** argv) {
       std::cerr << "duet-bridge: WebSocket clients on " << address << std::endl;
       std::cerr << "duet-bridge: dashboard on http://" << address << "/" << std::endl;
     }
-    service_thread = std::thread{[&service] { service->run(); }};
+    service_thread = std::thread{[&service, &service_ended] {
+      service_ended = service->run();
+      // Ended by itself (its CSV output failed): the whole bridge stops, the way a SIGTERM stops it.
+      if (!service_ended) ::kill(::getpid(), SIGTERM);
+    }};
   }
   const auto status = [&] {
     std::string text = relay ? relay->status() : std::string{};
@@ -193,8 +206,9 @@ int run(int argc, char** argv) {
     service->stop();
     service_thread.join();
   }
+  if (!service_ended) std::cerr << "duet-bridge: " << service_ended.error() << '\n';
   std::cerr << "duet-bridge: stopped; " << status() << '\n';
-  return 0;
+  return service_ended ? 0 : 1;
 }
 
 }  // namespace

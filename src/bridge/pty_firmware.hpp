@@ -19,9 +19,21 @@
 
 namespace duet::bridge {
 
+struct PtyFirmwareOptions {
+  std::uint8_t max_cto = 248;  // smaller: a DOWNLOAD of the table takes more DOWNLOAD_NEXT packets in block mode
+  // Calibration locked at CONNECT until UNLOCK with the key for the seed {1, 2, 3, 4}: each byte inverted.
+  bool calibration_locked = false;
+};
+
 class PtyFirmware {
  public:
-  PtyFirmware() = default;
+  explicit PtyFirmware(PtyFirmwareOptions options = {}) {
+    configuration_.max_cto = options.max_cto;
+    if (options.calibration_locked) {
+      configuration_.protected_resources = xcp::resource::calibration_paging;
+      configuration_.seed_and_key = {.make_seed = make_seed, .key_is_valid = key_is_valid};
+    }
+  }
   ~PtyFirmware() { stop(); }
   PtyFirmware(const PtyFirmware&) = delete;
   PtyFirmware& operator=(const PtyFirmware&) = delete;
@@ -43,8 +55,21 @@ class PtyFirmware {
 
   std::uint32_t counter = 0;
   std::array<std::uint8_t, 8> parameters{};
+  std::array<std::uint8_t, 256> table{};  // more than one packet holds: for DOWNLOAD in block mode
 
  private:
+  static std::size_t make_seed(std::uint8_t, std::span<std::uint8_t> seed) {
+    for (std::size_t byte = 0; byte < 4; ++byte) seed[byte] = static_cast<std::uint8_t>(byte + 1);
+    return 4;
+  }
+  static bool key_is_valid(std::uint8_t, std::span<const std::uint8_t> seed, std::span<const std::uint8_t> key) {
+    if (key.size() != seed.size()) return false;
+    for (std::size_t byte = 0; byte < key.size(); ++byte) {
+      if (key[byte] != static_cast<std::uint8_t>(~seed[byte])) return false;
+    }
+    return true;
+  }
+
   void serve() {
     std::array<std::uint8_t, 4096> input{};
     std::array<std::uint8_t, 4096> output{};
@@ -88,14 +113,16 @@ class PtyFirmware {
   std::thread thread_;
   std::vector<std::uint8_t> garbage_;
 
-  std::array<xcp::MemoryRegion, 2> regions_{
+  std::array<xcp::MemoryRegion, 3> regions_{
       xcp::MemoryRegion{
           .name = "counter", .address = 0x1000, .size = 4, .memory = reinterpret_cast<std::uint8_t*>(&counter)},
       xcp::MemoryRegion{.name = "parameters",
                         .address = 0x2000,
                         .size = 8,
                         .memory = parameters.data(),
-                        .access = xcp::Access::read_write}};
+                        .access = xcp::Access::read_write},
+      xcp::MemoryRegion{
+          .name = "table", .address = 0x3000, .size = 256, .memory = table.data(), .access = xcp::Access::read_write}};
   std::array<xcp::EventChannel, 1> events_{xcp::EventChannel{.name = "1 ms", .time_cycle = 1, .time_unit = 6}};
   std::array<xcp::DaqList, 2> lists_{};
   std::array<xcp::Odt, 4> odts_{};

@@ -11,6 +11,7 @@
 #include <sys/timerfd.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -37,8 +38,6 @@ std::string peer_name(const sockaddr_in& peer) {
   inet_ntop(AF_INET, &peer.sin_addr, text, sizeof(text));
   return std::string{text} + ":" + std::to_string(ntohs(peer.sin_port));
 }
-
-bool is_answer(std::uint8_t pid) { return pid == xcp::pid::response || pid == xcp::pid::error; }
 
 // The LEN/CTR header of a frame that carries `size` bytes.
 std::array<std::uint8_t, 4> frame_header(std::uint16_t counter, std::size_t size) {
@@ -113,8 +112,6 @@ void Relay::open_channel_now() {
   }
   channel_ = opened.value();
   retry_delay_ = std::chrono::milliseconds{100};
-  from_channel_.reset();
-  to_channel_.clear();
   ++channel_opens_;
   channel_open_ = true;
   epoll_event event{EPOLLIN, {.fd = channel_}};
@@ -129,10 +126,16 @@ void Relay::close_channel(const std::string& reason) {
   ::close(channel_);
   channel_ = -1;
   channel_open_ = false;
-  swallow_responses_ = 0;
-  commands_in_flight_.clear();
+  discard_partial_frame(from_channel_);
+  to_channel_.clear();
+  session_.channel_reset();  // what the commands written or waiting still wait for will not come: counted there
   log("channel " + options_.channel_uri + " closed (" + reason + "); retrying");
   arm_retry(retry_delay_);
+  // Commands held back will not reach this slave either: the master hears so now, not after a timeout.
+  std::deque<HeldCommand> held = std::move(held_commands_);
+  held_commands_.clear();
+  held_bytes_ = 0;
+  for (const HeldCommand& command : held) refuse_command(command.packet);
 }
 
 void Relay::accept_master() {
@@ -156,8 +159,7 @@ void Relay::accept_master() {
   if (options_.master_send_buffer > 0) {
     setsockopt(master_, SOL_SOCKET, SO_SNDBUF, &options_.master_send_buffer, sizeof(options_.master_send_buffer));
   }
-  from_master_.reset();
-  to_master_.clear();
+  next_counter_to_master_ = 0;
   ++masters_served_;
   master_connected_ = true;
   epoll_event event{EPOLLIN, {.fd = master_}};
@@ -172,6 +174,7 @@ void Relay::close_master(const std::string& reason) {
   ::close(master_);
   master_ = -1;
   to_master_.clear();
+  discard_partial_frame(from_master_);
   master_gone(reason);
 }
 
@@ -182,25 +185,31 @@ void Relay::forget_udp_master(const std::string& reason) {
   master_gone(reason);
 }
 
-// The master went away: end its session with the slave so that DAQ stops, and swallow the answer.
+// The master went away: end its session with the slave, if one is open, so that DAQ stops. The answers still to come
+// are owed to nobody (SessionTracker).
 void Relay::master_gone(const std::string& reason) {
   master_connected_ = false;
   if (options_.verbose) log("master gone (" + reason + ")");
-  // Only a session the master opened needs ending; a disconnected slave would not answer, and an answer
-  // expected but never coming would swallow the next master's.
-  if (channel_ >= 0 && master_opened_session_) {
+  commands_abandoned_ += held_commands_.size();  // held back, never sent, and nobody waits for them now
+  held_commands_.clear();
+  held_bytes_ = 0;
+  const auto now = std::chrono::steady_clock::now();
+  if (session_.master_gone(now) && channel_ >= 0) {
     const std::array<std::uint8_t, 1> disconnect{disconnect_command};
     enqueue_to_slave(0, disconnect);
-    ++swallow_responses_;
+    session_.relay_disconnect(now);
   }
-  master_opened_session_ = false;
 }
 
 void Relay::enqueue_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
   to_channel_.append(frame_header(counter, packet.size()));
   to_channel_.append(packet);
-  commands_in_flight_.push_back(std::chrono::steady_clock::now());
   ++frames_to_slave_;
+}
+
+void Relay::discard_partial_frame(xcp::FrameDecoder& decoder) {
+  partial_frame_bytes_ += decoder.buffered();
+  decoder.reset();
 }
 
 void Relay::read_channel() {
@@ -238,26 +247,24 @@ void Relay::read_master() {
 }
 
 void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet) {
-  const bool answer = is_answer(packet[0]);
-  if (answer && !commands_in_flight_.empty()) {
-    const double latency =
-        std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - commands_in_flight_.front())
-            .count();
-    commands_in_flight_.pop_front();
-    latency_total_us_ = latency_total_us_ + latency;
-    if (latency > latency_max_us_) latency_max_us_ = latency;
-    ++responses_;
-  }
-  if (answer && swallow_responses_ > 0) {
-    --swallow_responses_;
+  const SessionTracker::Delivery delivery = session_.slave_packet(packet, std::chrono::steady_clock::now());
+  if (!delivery.to_master || !has_master()) {
+    ++frames_without_master_;
+    release_held_commands();  // the answer they waited behind may have been this one
     return;
   }
+  deliver_to_master(counter, packet);
+  if (udp_master_leaving_ && delivery.answers_command == disconnect_command) forget_udp_master("disconnected");
+}
+
+void Relay::deliver_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet) {
+  next_counter_to_master_ = static_cast<std::uint16_t>(counter + 1U);
+  const bool daq = packet[0] < xcp::pid::service;
   if (udp_master_) {
-    send_to_udp_master(counter, packet, answer);
+    send_to_udp_master(counter, packet, daq);
     return;
   }
-  if (master_ < 0) return;
-  if (!answer && packet[0] < xcp::pid::service && to_master_.size() > options_.master_queue_limit) {
+  if (daq && to_master_.size() > options_.master_queue_limit) {
     ++daq_frames_dropped_;  // the master does not keep up: drop DAQ, never answers
     return;
   }
@@ -266,22 +273,25 @@ void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_
   ++frames_to_master_;
 }
 
-// One frame per datagram; a datagram the kernel will not take now is lost, as UDP may lose it anyway (counted if DAQ).
-void Relay::send_to_udp_master(std::uint16_t counter, std::span<const std::uint8_t> packet, bool answer) {
+// One frame per datagram; a datagram the kernel will not take now is lost, as UDP may lose it anyway (counted).
+void Relay::send_to_udp_master(std::uint16_t counter, std::span<const std::uint8_t> packet, bool daq) {
+  std::atomic<std::uint64_t>& lost = daq ? daq_frames_dropped_ : answers_dropped_;
+  if (packet.size() > max_datagram_packet) {
+    ++lost;
+    return;
+  }
   const auto header = frame_header(counter, packet.size());
   std::array<std::uint8_t, 4 + max_datagram_packet> datagram{};
-  if (packet.size() > max_datagram_packet) return;
   std::memcpy(datagram.data(), header.data(), header.size());
   std::memcpy(datagram.data() + header.size(), packet.data(), packet.size());
   const ssize_t sent = ::sendto(udp_, datagram.data(), header.size() + packet.size(), MSG_DONTWAIT,
                                 reinterpret_cast<const sockaddr*>(&*udp_master_), sizeof(sockaddr_in));
-  if (sent > 0) {
-    bytes_to_master_ += static_cast<std::uint64_t>(sent);
-    ++frames_to_master_;
-  } else if (!answer) {
-    ++daq_frames_dropped_;
+  if (sent <= 0) {
+    ++lost;
+    return;
   }
-  if (answer && udp_master_leaving_) forget_udp_master("disconnected");
+  bytes_to_master_ += static_cast<std::uint64_t>(sent);
+  ++frames_to_master_;
 }
 
 void Relay::read_udp() {
@@ -301,27 +311,58 @@ void Relay::read_udp() {
     }
     if (!udp_master_) {
       udp_master_ = peer;
+      next_counter_to_master_ = 0;
       ++masters_served_;
       master_connected_ = true;
       if (options_.verbose) log("master " + peer_name(peer) + " (UDP) connected");
     }
     udp_master_heard_ = std::chrono::steady_clock::now();
-    from_master_.reset();  // a datagram holds whole frames: nothing carries over from the one before
     from_master_.feed(
         std::span{read_buffer_}.first(static_cast<std::size_t>(received)),
         [this](std::uint16_t counter, std::span<const std::uint8_t> frame) { forward_to_slave(counter, frame); });
-    from_master_.reset();
+    discard_partial_frame(from_master_);  // a datagram holds whole frames: nothing carries over to the next
   }
 }
 
+// A command from the master: to the slave, held back while answers are owed to nobody, or refused.
 void Relay::forward_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet) {
-  if (channel_ < 0) return;  // no slave: the master will time out, as with a dead slave
-  if (packet[0] == static_cast<std::uint8_t>(xcp::Command::connect)) master_opened_session_ = true;
-  if (packet[0] == disconnect_command) {
-    master_opened_session_ = false;
-    udp_master_leaving_ = udp_master_.has_value();  // forgotten once the answer has gone back
+  const std::size_t frame_size = xcp::ethernet_framing.frame_size(packet.size());
+  if (channel_ < 0 || to_channel_.size() + held_bytes_ + frame_size > options_.slave_queue_limit) {
+    refuse_command(packet);
+    return;
   }
+  if (session_.owes_answers()) {
+    held_commands_.push_back({counter, {packet.begin(), packet.end()}});
+    held_bytes_ += frame_size;
+    return;
+  }
+  send_command(counter, packet);
+}
+
+void Relay::send_command(std::uint16_t counter, std::span<const std::uint8_t> packet) {
+  const bool answered = session_.master_command(packet, std::chrono::steady_clock::now());
   enqueue_to_slave(counter, packet);
+  if (packet[0] == disconnect_command && udp_master_) {
+    udp_master_leaving_ = answered;                    // then forgotten once the answer has gone back
+    if (!answered) forget_udp_master("disconnected");  // a disconnected slave will not answer
+  }
+}
+
+// ERR_CMD_BUSY tells a master to try the command again (XCP's pre-action for it), rather than wait for a timeout.
+void Relay::refuse_command(std::span<const std::uint8_t> packet) {
+  ++commands_refused_;
+  const std::array<std::uint8_t, 2> busy{xcp::pid::error, static_cast<std::uint8_t>(xcp::Error::cmd_busy)};
+  if (has_master()) deliver_to_master(next_counter_to_master_, busy);
+  if (packet[0] == disconnect_command && udp_master_) forget_udp_master("disconnected");
+}
+
+void Relay::release_held_commands() {
+  while (!held_commands_.empty() && !session_.owes_answers()) {
+    const HeldCommand command = std::move(held_commands_.front());
+    held_commands_.pop_front();
+    held_bytes_ -= xcp::ethernet_framing.frame_size(command.packet.size());
+    send_command(command.counter, command.packet);
+  }
 }
 
 void Relay::flush_stale_frames() {
@@ -400,7 +441,13 @@ void Relay::run(bool handle_signals, const std::function<std::string()>& more_st
     // Without a partial frame waiting, sleep until something happens; with one, wake up to give up on it.
     const bool waiting =
         (channel_ >= 0 && from_channel_.buffered() > 0) || (master_ >= 0 && from_master_.buffered() > 0);
-    const int timeout = waiting ? 25 : udp_master_ ? 1000 : -1;
+    int timeout = waiting ? 25 : udp_master_ ? 1000 : -1;
+    if (const auto owed_until = session_.owed_until()) {  // and to give up answers that do not come
+      const auto left =
+          std::chrono::ceil<std::chrono::milliseconds>(*owed_until - std::chrono::steady_clock::now()).count();
+      const int until_given_up = static_cast<int>(std::max<decltype(left)>(left, 0));
+      timeout = timeout < 0 ? until_given_up : std::min(timeout, until_given_up);
+    }
     const int ready = epoll_wait(epoll_, events.data(), static_cast<int>(events.size()), timeout);
     if (ready < 0 && errno != EINTR) break;
     for (int index = 0; index < ready; ++index) {
@@ -436,6 +483,7 @@ void Relay::run(bool handle_signals, const std::function<std::string()>& more_st
     if (udp_master_ && std::chrono::steady_clock::now() - udp_master_heard_ > udp_master_silence) {
       forget_udp_master("silent for " + std::to_string(udp_master_silence.count()) + " s");
     }
+    if (session_.give_up_owed_answers(std::chrono::steady_clock::now())) release_held_commands();
     flush_stale_frames();
     flush_channel();
     flush_master();
@@ -457,13 +505,19 @@ RelayCounters Relay::counters() const {
   counters.bytes_to_master = bytes_to_master_;
   counters.bytes_to_slave = bytes_to_slave_;
   counters.daq_frames_dropped = daq_frames_dropped_;
-  counters.garbage_bytes = from_channel_.dropped_bytes() + from_master_.dropped_bytes();
+  counters.answers_dropped = answers_dropped_;
+  counters.frames_without_master = frames_without_master_;
+  counters.commands_refused = commands_refused_;
+  const SessionTracker::Figures figures = session_.figures();
+  counters.commands_unanswered = figures.commands_unanswered + commands_abandoned_;
+  counters.garbage_bytes = from_channel_.dropped_bytes() + from_master_.dropped_bytes() + partial_frame_bytes_;
   counters.channel_opens = channel_opens_;
   counters.masters_served = masters_served_;
   counters.masters_refused = masters_refused_;
-  counters.responses = responses_;
-  counters.latency_mean_us = responses_ == 0 ? 0 : latency_total_us_ / static_cast<double>(responses_.load());
-  counters.latency_max_us = latency_max_us_;
+  counters.responses = figures.responses;
+  counters.latency_mean_us =
+      figures.responses == 0 ? 0 : figures.latency_total_us / static_cast<double>(figures.responses);
+  counters.latency_max_us = figures.latency_max_us;
   return counters;
 }
 
@@ -473,10 +527,12 @@ std::string Relay::status() const {
   out << "channel " << (channel_open_ ? "open" : "closed") << ", master " << (master_connected_ ? "connected" : "none")
       << "; frames to master " << counters.frames_to_master << " (" << counters.bytes_to_master << " bytes), to slave "
       << counters.frames_to_slave << " (" << counters.bytes_to_slave << " bytes); DAQ frames dropped "
-      << counters.daq_frames_dropped << "; garbage bytes " << counters.garbage_bytes << "; channel opened "
+      << counters.daq_frames_dropped << "; answers dropped " << counters.answers_dropped << "; frames without master "
+      << counters.frames_without_master << "; commands refused " << counters.commands_refused << ", unanswered "
+      << counters.commands_unanswered << "; garbage bytes " << counters.garbage_bytes << "; channel opened "
       << counters.channel_opens << " times; masters served " << counters.masters_served << ", refused "
-      << counters.masters_refused << "; latency mean " << counters.latency_mean_us << " us, max "
-      << counters.latency_max_us << " us";
+      << counters.masters_refused << "; responses " << counters.responses << ", latency mean "
+      << counters.latency_mean_us << " us, max " << counters.latency_max_us << " us";
   return out.str();
 }
 

@@ -5,9 +5,13 @@
 //   pass unchanged.
 // - One master at a time: a second connection is closed at once, and logged; on UDP, the master is the peer of the
 //   first datagram while there is none, datagrams from others are dropped (logged once), and it is gone after its
-//   DISCONNECT has been answered or after 30 s of silence.
-// - A master that goes away (cleanly or not) is disconnected from the slave on its behalf, so that DAQ stops; the
-//   slave's answer to that is swallowed.
+//   DISCONNECT has been answered (at once if the slave will not answer it) or after 30 s of silence.
+// - The session is watched (session_tracker.hpp): a master that goes away (cleanly or not) while the slave's session
+//   is open is disconnected on its behalf, so that DAQ stops; the answers owed to it and to that DISCONNECT go to
+//   nobody, and the next master's commands wait until they have come (or given up after a while), so that no answer
+//   of theirs reaches the wrong master.
+// - A command that cannot reach the slave (no channel, or too much waiting for it) is answered by the relay with
+//   ERR_CMD_BUSY, which tells a master to try again; every frame lost on the way is counted.
 // - The channel going away (closed tty, firmware restarted) is retried with back-off; the listener stays open.
 // - Towards the master the queue is bounded: past the limit DAQ frames are dropped (counted), responses never. The
 //   channel is read whenever it has bytes; writes to it go in chunks of at most 496 bytes (an RPMsg payload) and are
@@ -31,6 +35,7 @@
 #include "channel.hpp"
 #include "duet/support/result.hpp"
 #include "duet/xcp/framing.hpp"
+#include "session_tracker.hpp"
 
 namespace duet::bridge {
 
@@ -40,6 +45,8 @@ struct RelayOptions {
   std::string listen_address = "127.0.0.1";
   std::uint16_t listen_port = 5555;  // 0: any free port
   std::size_t master_queue_limit = 1U << 20;
+  // Commands waiting to be written to the channel or held back (masters wait for answers: little ever waits).
+  std::size_t slave_queue_limit = std::size_t{64} * 1024;
   // The kernel's send buffer towards the master: with the queue, all a slow master can hold up (0: the kernel's).
   int master_send_buffer = 256 * 1024;
   std::size_t channel_chunk = 496;
@@ -52,12 +59,18 @@ struct RelayCounters {
   std::uint64_t bytes_to_master = 0;
   std::uint64_t bytes_to_slave = 0;
   std::uint64_t daq_frames_dropped = 0;
-  std::uint64_t garbage_bytes = 0;
+  // Answers, events and service requests a UDP master could not be sent (too long for a datagram, or refused).
+  std::uint64_t answers_dropped = 0;
+  // Frames from the slave for a master that is gone: DAQ after it left, answers owed to it or to the relay.
+  std::uint64_t frames_without_master = 0;
+  std::uint64_t commands_refused = 0;     // answered ERR_CMD_BUSY by the relay: no channel, or too many waiting
+  std::uint64_t commands_unanswered = 0;  // waited for an answer that never came (SessionTracker)
+  std::uint64_t garbage_bytes = 0;        // bytes that were no whole frame
   std::uint64_t channel_opens = 0;
   std::uint64_t masters_served = 0;
   std::uint64_t masters_refused = 0;
-  std::uint64_t responses = 0;
-  double latency_mean_us = 0;  // command forwarded -> its response back
+  std::uint64_t responses = 0;  // answers paired with their command
+  double latency_mean_us = 0;   // command forwarded -> its answer back
   double latency_max_us = 0;
 };
 
@@ -117,7 +130,7 @@ class Relay {
   void forget_udp_master(const std::string& reason);
   void master_gone(const std::string& reason);
   void read_udp();
-  void send_to_udp_master(std::uint16_t counter, std::span<const std::uint8_t> packet, bool answer);
+  void send_to_udp_master(std::uint16_t counter, std::span<const std::uint8_t> packet, bool daq);
   [[nodiscard]] bool has_master() const { return master_ >= 0 || udp_master_.has_value(); }
   void read_channel();
   void read_master();
@@ -127,7 +140,13 @@ class Relay {
   void update_interest();
   void enqueue_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet);
   void forward_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet);
+  void deliver_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet);
   void forward_to_slave(std::uint16_t counter, std::span<const std::uint8_t> packet);
+  void send_command(std::uint16_t counter, std::span<const std::uint8_t> packet);
+  void refuse_command(std::span<const std::uint8_t> packet);
+  void release_held_commands();
+  // A partial frame whose rest will never come (its link ended, or its datagram did): its bytes were garbage.
+  void discard_partial_frame(xcp::FrameDecoder& decoder);
   // Both ends send whole frames at once: a partial frame that waits longer than a gap was garbage.
   void flush_stale_frames();
 
@@ -143,7 +162,7 @@ class Relay {
   std::optional<sockaddr_in> udp_master_;
   std::optional<sockaddr_in> last_refused_;  // logged once, not for every datagram
   std::chrono::steady_clock::time_point udp_master_heard_{};
-  bool udp_master_leaving_ = false;                         // it sent DISCONNECT
+  bool udp_master_leaving_ = false;                         // it sent DISCONNECT, which the slave will answer
   static constexpr std::size_t max_datagram_packet = 1468;  // an Ethernet frame's UDP payload less LEN/CTR
   bool channel_watched_for_output_ = false;
   bool master_watched_for_output_ = false;
@@ -163,13 +182,19 @@ class Relay {
   xcp::FrameDecoder from_master_;
   ByteQueue to_master_;
   ByteQueue to_channel_;
-  bool master_opened_session_ = false;  // the master sent CONNECT (and not DISCONNECT since)
-  int swallow_responses_ = 0;           // answers to commands the bridge sent on a vanished master's behalf
-  std::deque<std::chrono::steady_clock::time_point> commands_in_flight_;
+  SessionTracker session_;
+  // The master's commands held back while answers are owed to nobody (see SessionTracker), oldest first.
+  struct HeldCommand {
+    std::uint16_t counter = 0;
+    std::vector<std::uint8_t> packet;
+  };
+  std::deque<HeldCommand> held_commands_;
+  std::size_t held_bytes_ = 0;
+  std::uint16_t next_counter_to_master_ = 0;  // for the relay's own answers, after the slave's last
 
   mutable std::atomic<std::uint64_t> frames_to_master_{0}, frames_to_slave_{0}, bytes_to_master_{0}, bytes_to_slave_{0},
-      daq_frames_dropped_{0}, channel_opens_{0}, masters_served_{0}, masters_refused_{0}, responses_{0};
-  std::atomic<double> latency_total_us_{0}, latency_max_us_{0};
+      daq_frames_dropped_{0}, answers_dropped_{0}, frames_without_master_{0}, commands_refused_{0},
+      commands_abandoned_{0}, partial_frame_bytes_{0}, channel_opens_{0}, masters_served_{0}, masters_refused_{0};
 };
 
 }  // namespace duet::bridge

@@ -8,10 +8,14 @@
 #include <poll.h>
 #include <sys/socket.h>
 
+#include <deque>
 #include <filesystem>
+#include <optional>
 #include <thread>
 
+#include "duet/xcp/framing.hpp"
 #include "duet/xcp/host/master.hpp"
+#include "duet/xcp/protocol.hpp"
 #include "pty_firmware.hpp"
 
 namespace duet::bridge {
@@ -189,7 +193,8 @@ TEST_F(BridgeEndToEnd, SplitFramesAndAMasterKilledMidFrame) {
   const ssize_t received = ::recv(slow, answer.data(), answer.size(), 0);
   ::close(slow);
   ASSERT_GE(received, 5);
-  EXPECT_EQ(answer[4], 0xFF);  // CONNECT's positive response, framed
+  EXPECT_EQ(answer[4], 0xFF);                      // CONNECT's positive response, framed
+  EXPECT_EQ(relay->counters().garbage_bytes, 3U);  // the half frame of the master killed mid-frame
 }
 
 TEST(BridgeRobustness, AMasterThatStopsReadingLosesDaqFramesButNotAnswers) {
@@ -289,6 +294,22 @@ TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
   EXPECT_TRUE(next.upload(0, 0x1000, 4).ok());
 }
 
+TEST_F(BridgeEndToEnd, AUdpMasterWhoseDisconnectNoSlaveAnswersIsForgottenAtOnce) {
+  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+  ASSERT_TRUE(channel.ok()) << channel.error();
+  const std::array<std::uint8_t, 1> disconnect{0xFE};  // and no session: the slave will not answer it
+  ASSERT_TRUE(channel.value()->send(disconnect).ok());
+  const auto forgotten_by = std::chrono::steady_clock::now() + std::chrono::seconds{1};
+  while ((relay->counters().masters_served == 0 || relay->master_connected()) &&
+         std::chrono::steady_clock::now() < forgotten_by) {
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  }
+  EXPECT_EQ(relay->counters().masters_served, 1U);
+  EXPECT_FALSE(relay->master_connected());  // not after 30 s of silence
+  Master next = connect();
+  EXPECT_TRUE(next.connect().ok());
+}
+
 TEST_F(BridgeEndToEnd, GarbageFromTheMasterIsSkippedAndCommandsWorkAfterIt) {
   const int socket = connect_raw(relay->port());
   ASSERT_GE(socket, 0);
@@ -304,6 +325,302 @@ TEST_F(BridgeEndToEnd, GarbageFromTheMasterIsSkippedAndCommandsWorkAfterIt) {
   EXPECT_GE(relay->counters().garbage_bytes, 4U);
   EXPECT_EQ(relay->counters().frames_to_slave, 1U);  // nothing but the CONNECT reached the slave
   ::close(socket);  // (after the counters: the relay then disconnects the slave on the master's behalf)
+}
+
+TEST_F(BridgeEndToEnd, OnUdpAPartialFrameIsGarbageAndAFrameTooLongForADatagramIsCounted) {
+  const int socket = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(relay->port());
+  address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::connect(socket, reinterpret_cast<sockaddr*>(&address), sizeof(address)), 0);
+  const auto answer_is_positive = [socket] {
+    std::array<std::uint8_t, 2048> answer{};
+    pollfd readable{socket, POLLIN, 0};
+    return ::poll(&readable, 1, 1000) == 1 && ::recv(socket, answer.data(), answer.size(), 0) >= 5 &&
+           answer[4] == xcp::pid::response;
+  };
+  // CONNECT, then the first three bytes of a frame that the datagram does not hold.
+  const std::array<std::uint8_t, 9> connect{0x02, 0x00, 0x00, 0x00, 0xFF, 0x00, 0x05, 0x00, 0x00};
+  ASSERT_EQ(::send(socket, connect.data(), connect.size(), 0), static_cast<ssize_t>(connect.size()));
+  ASSERT_TRUE(answer_is_positive());
+  EXPECT_EQ(relay->counters().garbage_bytes, 3U);
+
+  // An event from the slave too long for one datagram, then GET_STATUS's answer behind it.
+  std::vector<std::uint8_t> event(4 + 1500);
+  event[0] = static_cast<std::uint8_t>(1500U);
+  event[1] = static_cast<std::uint8_t>(1500U >> 8U);
+  event[4] = xcp::pid::event;
+  event[5] = static_cast<std::uint8_t>(xcp::EventCode::user);
+  firmware.inject(event);
+  const std::array<std::uint8_t, 5> get_status{0x01, 0x00, 0x01, 0x00, 0xFD};
+  ASSERT_EQ(::send(socket, get_status.data(), get_status.size(), 0), static_cast<ssize_t>(get_status.size()));
+  ASSERT_TRUE(answer_is_positive());
+  EXPECT_EQ(relay->counters().answers_dropped, 1U);
+  ::close(socket);
+}
+
+using Packet = std::vector<std::uint8_t>;
+using Microseconds = std::chrono::duration<double, std::micro>;
+
+// Long enough that an answer paired with a command from before it would show in latency_max_us.
+constexpr std::chrono::milliseconds telling_pause{100};
+
+Master master_of(const Relay& relay, std::chrono::milliseconds timeout = std::chrono::milliseconds{1000}) {
+  auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, timeout);
+  EXPECT_TRUE(channel.ok()) << (channel.ok() ? "" : channel.error());
+  return Master{std::move(channel).value(), timeout};
+}
+
+// Runs `call`, keeping in `longest` the longest a call took: no answer to a command of it can have taken longer.
+template <typename Call>
+auto timed(Microseconds& longest, Call&& call) {
+  const auto start = std::chrono::steady_clock::now();
+  auto result = call();
+  longest = std::max(longest, Microseconds{std::chrono::steady_clock::now() - start});
+  return result;
+}
+
+// A master on TCP without duet's Master, for what a careful master would not do: commands without waiting for the
+// answer, several in one write, leaving in the middle of a block. Keeps the longest it waited for an answer.
+class RawMaster {
+ public:
+  explicit RawMaster(std::uint16_t port) : socket_(connect_raw(port)) {}
+  ~RawMaster() { ::close(socket_); }
+  RawMaster(const RawMaster&) = delete;
+  RawMaster& operator=(const RawMaster&) = delete;
+
+  // Frames the packets and sends them in one write.
+  bool send(const std::vector<Packet>& packets) {
+    std::vector<std::uint8_t> bytes;
+    for (const Packet& packet : packets) {
+      const auto size = static_cast<std::uint16_t>(packet.size());
+      bytes.insert(bytes.end(), {static_cast<std::uint8_t>(size), static_cast<std::uint8_t>(size >> 8U),
+                                 static_cast<std::uint8_t>(counter_), static_cast<std::uint8_t>(counter_ >> 8U)});
+      ++counter_;
+      bytes.insert(bytes.end(), packet.begin(), packet.end());
+    }
+    sent_at_ = std::chrono::steady_clock::now();
+    return ::send(socket_, bytes.data(), bytes.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(bytes.size());
+  }
+
+  // The next answer (a positive response or an ERR) within a second; none if it did not come.
+  std::optional<Packet> answer() {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds{1};
+    for (;;) {
+      while (!packets_.empty()) {
+        Packet packet = std::move(packets_.front());
+        packets_.pop_front();
+        if (packet[0] != xcp::pid::response && packet[0] != xcp::pid::error) continue;
+        longest_wait = std::max(longest_wait, Microseconds{std::chrono::steady_clock::now() - sent_at_});
+        return packet;
+      }
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      pollfd readable{socket_, POLLIN, 0};
+      if (left.count() <= 0 || ::poll(&readable, 1, static_cast<int>(left.count())) != 1) return std::nullopt;
+      std::array<std::uint8_t, 4096> bytes{};
+      const ssize_t received = ::recv(socket_, bytes.data(), bytes.size(), 0);
+      if (received <= 0) return std::nullopt;
+      decoder_.feed(std::span{bytes}.first(static_cast<std::size_t>(received)),
+                    [this](std::uint16_t, std::span<const std::uint8_t> packet) {
+                      packets_.emplace_back(packet.begin(), packet.end());
+                    });
+    }
+  }
+
+  Microseconds longest_wait{0};
+
+ private:
+  int socket_;
+  std::uint16_t counter_ = 0;
+  std::chrono::steady_clock::time_point sent_at_{};
+  std::vector<std::uint8_t> buffer_ = std::vector<std::uint8_t>(xcp::ethernet_framing.frame_size(0xFFFF));
+  xcp::FrameDecoder decoder_{xcp::ethernet_framing, buffer_, 0xFFFF};
+  std::deque<Packet> packets_;
+};
+
+TEST(BridgeSessions, AfterAWrongKeyEndedTheSessionTheNextMastersConnectIsAnswered) {
+  PtyFirmware firmware{{.calibration_locked = true}};
+  firmware.start();
+  RunningRelay running{options_for(firmware.path())};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  {
+    Master master = master_of(relay);
+    ASSERT_TRUE(master.connect().ok());
+    const Status unlocked = master.unlock(xcp::resource::calibration_paging, [](std::uint8_t, auto seed) {
+      return Packet(seed.begin(), seed.end());  // not the key
+    });
+    ASSERT_FALSE(unlocked.ok());
+    EXPECT_NE(unlocked.error().find("ERR_ACCESS_LOCKED"), std::string::npos) << unlocked.error();
+  }  // gone, after the slave ended the session itself
+  Master next = master_of(relay);
+  ASSERT_TRUE(next.connect().ok());
+  const Status unlocked = next.unlock(xcp::resource::calibration_paging, [](std::uint8_t, auto seed) {
+    Packet key;
+    for (const std::uint8_t byte : seed) key.push_back(static_cast<std::uint8_t>(~byte));
+    return key;
+  });
+  EXPECT_TRUE(unlocked.ok()) << unlocked.error();
+  EXPECT_EQ(relay.counters().frames_without_master, 0U);  // no DISCONNECT on the first's behalf, no answer to lose
+  EXPECT_EQ(relay.counters().commands_unanswered, 0U);
+}
+
+TEST(BridgeSessions, AMasterGoneInTheMiddleOfABlockDownloadLeavesTheNextOneServed) {
+  PtyFirmware firmware{{.max_cto = 64}};  // 62 bytes per DOWNLOAD packet: 200 bytes take four
+  firmware.start();
+  RunningRelay running{options_for(firmware.path())};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  Packet block(200);
+  for (std::size_t byte = 0; byte < block.size(); ++byte) block[byte] = static_cast<std::uint8_t>(byte);
+  const auto part = [&block](std::uint8_t command, std::size_t at) {  // the count left, then 62 bytes
+    Packet packet{command, static_cast<std::uint8_t>(block.size() - at)};
+    const auto from = block.begin() + static_cast<std::ptrdiff_t>(at);
+    packet.insert(packet.end(), from, from + 62);
+    return packet;
+  };
+  Microseconds longest{0};
+  {
+    RawMaster leaving{relay.port()};
+    ASSERT_TRUE(leaving.send({{0xFF, 0x00}}));
+    ASSERT_TRUE(leaving.answer());
+    ASSERT_TRUE(leaving.send({{0xF6, 0x00, 0x00, 0x00, 0x00, 0x30, 0x00, 0x00}}));  // SET_MTA to the table
+    ASSERT_TRUE(leaving.answer());
+    ASSERT_TRUE(leaving.send({part(0xF0, 0), part(0xEF, 62), part(0xEF, 124)}));  // the last 14 bytes never come
+    longest = leaving.longest_wait;
+  }
+  std::this_thread::sleep_for(telling_pause);
+  Master next = master_of(relay);
+  ASSERT_TRUE(timed(longest, [&next] { return next.connect(); }).ok());
+  const Status downloaded = timed(longest, [&next, &block] { return next.download(0, 0x3000, block); });
+  ASSERT_TRUE(downloaded.ok()) << downloaded.error();
+  const auto uploaded = timed(longest, [&next] { return next.upload(0, 0x3000, 200); });
+  ASSERT_TRUE(uploaded.ok()) << uploaded.error();
+  EXPECT_EQ(uploaded.value(), block);
+  const RelayCounters counters = relay.counters();
+  EXPECT_EQ(counters.frames_without_master, 1U);  // the answer to the relay's DISCONNECT
+  EXPECT_EQ(counters.commands_unanswered, 0U);
+  // CONNECT and SET_MTA; then CONNECT, SET_MTA and the block's last packet; SET_MTA and four UPLOADs.
+  EXPECT_EQ(counters.responses, 10U);
+  EXPECT_LE(counters.latency_max_us, longest.count());
+}
+
+TEST(BridgeSessions, CommandsToADisconnectedSlaveWaitForNoAnswer) {
+  PtyFirmware firmware;
+  firmware.start();
+  RunningRelay running{options_for(firmware.path())};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  const std::vector<Packet> statuses(1000, Packet{0xFD});  // GET_STATUS, which a disconnected slave ignores
+  Microseconds longest{0};
+  {
+    RawMaster careless{relay.port()};
+    for (int session = 0; session < 2; ++session) {
+      ASSERT_TRUE(careless.send({{0xFF, 0x00}}));
+      const std::optional<Packet> connected = careless.answer();
+      ASSERT_TRUE(connected);
+      EXPECT_EQ(connected->size(), 8U);  // CONNECT's own response
+      ASSERT_TRUE(careless.send({{0xFE}}));
+      ASSERT_TRUE(careless.answer());
+      ASSERT_TRUE(careless.send(statuses));
+      std::this_thread::sleep_for(telling_pause);
+    }
+    longest = careless.longest_wait;
+  }  // gone while disconnected: nothing to end on its behalf
+  Master next = master_of(relay);
+  ASSERT_TRUE(timed(longest, [&next] { return next.connect(); }).ok());
+  const RelayCounters counters = relay.counters();
+  EXPECT_EQ(counters.frames_to_slave, 2005U);
+  EXPECT_EQ(counters.responses, 5U);
+  EXPECT_EQ(counters.commands_unanswered, 0U);
+  EXPECT_EQ(counters.frames_without_master, 0U);
+  EXPECT_LE(counters.latency_max_us, longest.count());
+}
+
+TEST(BridgeSessions, ACommandSentBeforeTheLastWasAnsweredLeavesThatOneUnanswered) {
+  PtyFirmware firmware;
+  firmware.start();
+  RunningRelay running{options_for(firmware.path())};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  RawMaster impatient{relay.port()};
+  ASSERT_TRUE(impatient.send({{0xFF, 0x00}}));
+  ASSERT_TRUE(impatient.answer());
+  ASSERT_TRUE(impatient.send({{0xFD}, {0xFD}}));  // two GET_STATUS in one write
+  EXPECT_TRUE(impatient.answer());
+  EXPECT_TRUE(impatient.answer());  // both answers reach the master
+  const RelayCounters counters = relay.counters();
+  EXPECT_EQ(counters.commands_unanswered, 1U);  // the first, given up when the second came
+  EXPECT_EQ(counters.responses, 2U);            // CONNECT, and the second GET_STATUS with the first answer
+  EXPECT_LE(counters.latency_max_us, impatient.longest_wait.count());
+}
+
+TEST(BridgeSessions, AnAnswerThatNeverComesHoldsTheNextMasterBackOnlyBriefly) {
+  PtyFirmware firmware;
+  firmware.start();
+  RunningRelay running{options_for(firmware.path())};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  {
+    RawMaster first{relay.port()};
+    // A positive response out of the blue, as from a session older than the relay: the relay takes the slave for
+    // connected, which it is not.
+    firmware.inject({0x01, 0x00, 0x00, 0x00, 0xFF});
+    ASSERT_TRUE(first.answer());
+  }  // gone: the relay sends DISCONNECT, which the disconnected slave does not answer
+  Master next = master_of(relay);
+  EXPECT_TRUE(next.connect().ok());  // held back until the relay gave the answer up, then served
+  EXPECT_TRUE(next.upload(0, 0x1000, 4).ok());
+  EXPECT_EQ(relay.counters().commands_unanswered, 1U);  // the relay's DISCONNECT
+  EXPECT_EQ(relay.counters().frames_to_slave, 4U);      // DISCONNECT, CONNECT, SET_MTA, UPLOAD
+}
+
+TEST(BridgeSessions, CommandsBeforeTheChannelIsOpenAreAnsweredBusy) {
+  const std::filesystem::path link =
+      std::filesystem::temp_directory_path() / ("duet_bridge_late_channel_" + std::to_string(::getpid()));
+  std::filesystem::remove(link);
+  RunningRelay running{options_for(link.string())};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  {
+    Master early = master_of(relay);
+    const auto refused = early.connect();
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.error().find("ERR_CMD_BUSY"), std::string::npos) << refused.error();
+  }
+  EXPECT_EQ(relay.counters().commands_refused, 1U);
+  PtyFirmware firmware;  // the firmware comes up
+  firmware.start();
+  std::filesystem::create_symlink(firmware.path(), link);
+  const auto opened_by = std::chrono::steady_clock::now() + std::chrono::seconds{5};
+  while (!relay.channel_open() && std::chrono::steady_clock::now() < opened_by)
+    std::this_thread::sleep_for(std::chrono::milliseconds{5});
+  ASSERT_TRUE(relay.channel_open());
+  Master later = master_of(relay);
+  EXPECT_TRUE(later.connect().ok());
+  EXPECT_EQ(relay.counters().commands_refused, 1U);
+  std::filesystem::remove(link);
+}
+
+TEST(BridgeSessions, CommandsBeyondTheQueueTowardsTheSlaveAreAnsweredBusy) {
+  PtyFirmware firmware;
+  firmware.start();
+  RelayOptions options = options_for(firmware.path());
+  options.slave_queue_limit = 32;
+  RunningRelay running{options};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
+  Master master = master_of(relay);
+  ASSERT_TRUE(master.connect().ok());
+  const Packet values(30, 7);
+  const Status refused = master.download(0, 0x3000, values);  // DOWNLOAD: 32 bytes and LEN/CTR, more than may wait
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.error().find("ERR_CMD_BUSY"), std::string::npos) << refused.error();
+  EXPECT_TRUE(master.download(0, 0x3000, std::span{values}.first(4)).ok());
+  EXPECT_EQ(relay.counters().commands_refused, 1U);
+  EXPECT_EQ(firmware.table[3], 7);
 }
 
 }  // namespace
