@@ -348,6 +348,14 @@ class FileWriter {
     return text + "\n}  // namespace " + name_ + "::xcp\n";
   }
 
+  std::string_view timestamp_size_name() const {
+    switch (program_.model->xcp.timestamp_bytes) {
+      case 1: return "byte";
+      case 2: return "word";
+      default: return "dword";
+    }
+  }
+
   duet::xcp::IdentificationField identification() const {
     const std::string& kind = program_.model->xcp.identification;
     if (kind == "relative_byte") return duet::xcp::IdentificationField::relative_byte;
@@ -381,12 +389,19 @@ class FileWriter {
         "                       .identification = " +
         quoted(name_) +
         ",\n"
+        "                       .epk = epk,\n"
         "                       .write_atomically = port.write_atomically,\n"
         "                       .download_buffer = download_buffer_,\n"
         "                       .events = events,\n"
         "                       .daq = {daq_lists_, odts_, odt_entries_},\n"
+        "                       .identification_field = duet::xcp::IdentificationField::" +
+        program_.model->xcp.identification +
+        ",\n"
         "                       .queue = &queue_,\n"
         "                       .timestamp = port.timestamp,\n"
+        "                       .timestamp_size = duet::xcp::TimestampSize::" +
+        std::string{timestamp_size_name()} +
+        ",\n"
         "                       .timestamp_unit = 3,  // 1 us\n"
         "                       .timestamp_ticks = 1},\n"
         "        slave_{configuration_} {}\n"

@@ -19,6 +19,7 @@ constexpr std::uint8_t protectable =
 constexpr std::uint8_t id_ascii_text = 0;
 constexpr std::uint8_t id_a2l_name = 1;
 constexpr std::uint8_t id_a2l_file = 4;
+constexpr std::uint8_t id_epk = 5;
 // GET_ID's mode byte, bit 0: the identification follows in this response (else the master uploads it from the MTA).
 constexpr std::uint8_t id_in_response = 0x01;
 constexpr std::size_t id_response_header = 8;  // PID, mode, reserved word, length
@@ -85,6 +86,7 @@ Slave::Result Slave::get_id(PacketReader& request, PacketWriter& response) {
   const bool short_text = type == id_ascii_text || type == id_a2l_name;
   if (short_text) identification = as_bytes(configuration_.identification);
   if (type == id_a2l_file) identification = configuration_.a2l;
+  if (type == id_epk) identification = as_bytes(configuration_.epk);
   const auto length = static_cast<std::uint32_t>(identification.size());
   if (short_text && configuration_.identification_in_response &&
       id_response_header + identification.size() <= configuration_.max_cto) {

@@ -185,6 +185,11 @@ TEST_P(SlaveMatchesA2l, Epk) {
                                    static_cast<std::uint8_t>(at), static_cast<std::uint8_t>(at >> 8U),
                                    static_cast<std::uint8_t>(at >> 16U), static_cast<std::uint8_t>(at >> 24U)});
   EXPECT_EQ(std::string(uploaded.begin() + 1, uploaded.end()), a2l.epk);
+  const Bytes id = positive({0xFA, 0x05});  // GET_ID EPK: its length, to upload through the MTA (mode 0)
+  EXPECT_EQ(id[1], 0x00);
+  ASSERT_EQ(u32(id, 4), a2l.epk.size());
+  const Bytes epk = positive({0xF5, static_cast<std::uint8_t>(a2l.epk.size())});
+  EXPECT_EQ(std::string(epk.begin() + 1, epk.end()), a2l.epk);
 }
 
 TEST_P(SlaveMatchesA2l, Checksum) {

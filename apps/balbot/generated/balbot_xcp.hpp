@@ -103,12 +103,15 @@ class Slave {
                        .max_cto = max_cto,
                        .max_dto = max_dto,
                        .identification = "balbot",
+                       .epk = epk,
                        .write_atomically = port.write_atomically,
                        .download_buffer = download_buffer_,
                        .events = events,
                        .daq = {daq_lists_, odts_, odt_entries_},
+                       .identification_field = duet::xcp::IdentificationField::absolute,
                        .queue = &queue_,
                        .timestamp = port.timestamp,
+                       .timestamp_size = duet::xcp::TimestampSize::dword,
                        .timestamp_unit = 3,  // 1 us
                        .timestamp_ticks = 1},
         slave_{configuration_} {}

@@ -24,13 +24,13 @@ inline constexpr std::uint32_t epk_address = 262144;
 
 // The EPK: this generation of the model, as the A2L's MOD_PAR says it; a master uploads it from epk_address
 // (or asks GET_ID) to know that it talks to the firmware the A2L describes.
-inline constexpr char epk[] = "block_tour 81f8101e0ceae3a4";
+inline constexpr char epk[] = "block_tour 530d7ffba5398cff";
 
 // The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).
 inline constexpr std::uint8_t max_cto = 248;
-inline constexpr std::uint16_t max_dto = 248;
+inline constexpr std::uint16_t max_dto = 1024;
 inline constexpr std::size_t daq_lists = 8;
-inline constexpr std::size_t odts = 64;
+inline constexpr std::size_t odts = 300;
 inline constexpr std::size_t odt_entries = 512;
 inline constexpr std::size_t queue_bytes = 16384;
 inline constexpr std::size_t download_bytes = 256;
@@ -93,12 +93,15 @@ class Slave {
                        .max_cto = max_cto,
                        .max_dto = max_dto,
                        .identification = "block_tour",
+                       .epk = epk,
                        .write_atomically = port.write_atomically,
                        .download_buffer = download_buffer_,
                        .events = events,
                        .daq = {daq_lists_, odts_, odt_entries_},
+                       .identification_field = duet::xcp::IdentificationField::relative_word_aligned,
                        .queue = &queue_,
                        .timestamp = port.timestamp,
+                       .timestamp_size = duet::xcp::TimestampSize::word,
                        .timestamp_unit = 3,  // 1 us
                        .timestamp_ticks = 1},
         slave_{configuration_} {}

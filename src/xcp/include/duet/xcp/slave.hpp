@@ -46,6 +46,9 @@ struct SlaveConfiguration {
   ByteOrder byte_order = ByteOrder::intel;
   std::string_view identification;    // GET_ID type 1: the A2L file's name without path and extension
   std::span<const std::uint8_t> a2l;  // GET_ID type 4: the A2L itself, if the firmware carries it
+  // GET_ID type 5: the EPK, the text the A2L's MOD_PAR names this firmware by. Always through the MTA, as masters
+  // that ignore mode 1 for it expect.
+  std::string_view epk;
   // GET_ID types 0 and 1 answer with the identification inside the response (mode bit 0) when it fits in MAX_CTO,
   // rather than through the MTA for UPLOAD. The A2L itself always goes through the MTA.
   bool identification_in_response = false;
