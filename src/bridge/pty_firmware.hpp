@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -49,7 +50,10 @@ class PtyFirmware {
     if (thread_.joinable()) thread_.join();
   }
   // Writes bytes straight into the channel, as noise on the line would.
-  void inject(const std::vector<std::uint8_t>& bytes) { garbage_ = bytes; }
+  void inject(const std::vector<std::uint8_t>& bytes) {
+    const std::lock_guard held{garbage_lock_};  // the firmware's thread takes them
+    garbage_ = bytes;
+  }
   // Samples event 0 as often as the transmit queue has room, rather than once per millisecond: for throughput.
   std::atomic<bool> flood{false};
 
@@ -93,7 +97,8 @@ class PtyFirmware {
         slave_.on_event(0);
         next_step += std::chrono::milliseconds{1};
       }
-      if (!garbage_.empty()) {
+      {
+        const std::lock_guard held{garbage_lock_};
         unsent.insert(unsent.end(), garbage_.begin(), garbage_.end());
         garbage_.clear();
       }
@@ -111,6 +116,7 @@ class PtyFirmware {
   PseudoTerminal pty_;
   std::atomic<bool> running_{false};
   std::thread thread_;
+  std::mutex garbage_lock_;
   std::vector<std::uint8_t> garbage_;
 
   std::array<xcp::MemoryRegion, 3> regions_{

@@ -180,6 +180,25 @@ TEST_F(XcpCommand, ChecksumAndPages) {
   EXPECT_EQ(bad_segment.err, "duet xcp: GET_CAL_PAGE: ERR_SEGMENT_NOT_VALID (0x28)\n");
 }
 
+// A CSV that cannot be written (here: a full device) ends the recording with an error, not with samples lost quietly.
+TEST_F(XcpCommand, RecordFailsWhenItsCsvCannotBeWritten) {
+  std::atomic<bool> stepping{true};
+  std::thread model{[&] {
+    for (std::uint32_t number = 1; stepping; ++number) {
+      target.step(number);
+      std::this_thread::sleep_for(std::chrono::microseconds{500});
+    }
+  }};
+  const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms",
+                                "--duration", "0.2", "--output", "/dev/full"});
+  stepping = false;
+  model.join();
+  EXPECT_EQ(recorded.exit_code, ExitCode::failure);
+  EXPECT_NE(recorded.err.find("duet xcp: /dev/full: writing the samples failed after "), std::string::npos)
+      << recorded.err;
+  EXPECT_FALSE(target.slave.connected());  // DAQ stopped and the session ended all the same
+}
+
 TEST_F(XcpCommand, RecordFailsWhenNoSampleComes) {
   const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms",
                                 "--duration", "0.1"});  // the model does not step: no event

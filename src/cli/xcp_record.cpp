@@ -174,6 +174,7 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
       csv << '\n';
       ++samples;
     }
+    if (!csv) break;  // the disk is full or the reader went away: said below
     if (terminal) {
       streams.err << "\rrecording " << std::fixed << std::setprecision(1) << elapsed << " / " << options.duration_s
                   << " s, " << samples << " samples" << std::flush;
@@ -192,6 +193,12 @@ ExitCode run_record(const XcpOptions& options, Streams streams) {
     plot_file << plot::to_svg(figure);
     plot_file.close();
     if (!plot_file) return report({options.plot + ": cannot be written"}, streams);
+  }
+  csv.flush();
+  if (!csv) {
+    return report({(options.output.empty() ? std::string{"standard output"} : options.output) +
+                   ": writing the samples failed after " + std::to_string(samples) + " of them"},
+                  streams);
   }
   if (!stopped) return report({stopped.error()}, streams);
   if (!disconnected) return report({disconnected.error()}, streams);
