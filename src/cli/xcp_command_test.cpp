@@ -46,6 +46,19 @@ TEST_F(XcpCommand, InfoShowsTheSlave) {
   EXPECT_EQ(nlohmann::json::parse(json.out)["max_dto"], 64);
 }
 
+// Another firmware's A2L would put reads and writes at the wrong addresses: its EPK differs, and no command runs.
+TEST_F(XcpCommand, AnA2lOfAnotherFirmwareIsRefusedAtConnect) {
+  A2lDescription other = TestTarget::a2l({Protocol::tcp, "127.0.0.1", target.server.port()});
+  other.epk = "duet_target 2";
+  std::ofstream{a2l_file} << write_a2l(other);
+  const Outcome write = run({"xcp", "write", "--a2l", a2l_file, "gain=2"});
+  EXPECT_EQ(write.exit_code, ExitCode::failure);
+  EXPECT_NE(write.err.find("the slave holds EPK \"duet_target 1\" at 0x4000, the A2L names \"duet_target 2\""),
+            std::string::npos)
+      << write.err;
+  EXPECT_EQ(target.parameters[0], 0);  // nothing written
+}
+
 TEST_F(XcpCommand, ListsTheA2l) {
   const Outcome list = run({"xcp", "list", "--a2l", a2l_file, "--json"});
   ASSERT_EQ(list.exit_code, ExitCode::success) << list.err;
@@ -217,6 +230,8 @@ TEST_F(XcpCommand, RecordGoesOnAcrossTheClocksWrapAndFailsWhenPacketsAreLost) {
       {"FF 00", {"FF 05 80 FF DC 05 01 01"}},
       {"DA", {"FF 11 00 01 03 00 00 C0"}},
       {"D9", {"FF 01 F8 01 00 3C 01 00"}},
+      {"F6 00 00 00 00 40 00 00", {ok}},                               // the EPK's address, from the A2L
+      {"F5 0D", {"FF 64 75 65 74 5F 74 61 72 67 65 74 20 31 00 00"}},  // "duet_target 1", padded
       {"D6", {ok}},
       {"D5 00 01 00", {ok}},
       {"D4 00 00 00 01", {ok}},

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "duet/support/text_file.hpp"
+#include "duet/xcp/host/epk.hpp"
 #include "duet/xcp/host/values.hpp"
 
 namespace duet::cli::xcp_actions {
@@ -51,6 +52,9 @@ Result<Session> open_session(const XcpOptions& options, bool needs_master) {
   if (!channel) return Failure{channel.error()};
   session.master = std::make_unique<Master>(std::move(channel).value(), timeout);
   if (auto connected = session.master->connect(); !connected) return Failure{connected.error()};
+  if (session.a2l) {
+    if (Status same = check_epk(*session.master, *session.a2l); !same) return Failure{same.error()};
+  }
   return session;
 }
 

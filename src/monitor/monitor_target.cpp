@@ -17,6 +17,7 @@
 #include "duet/dashboard/dashboard.hpp"
 #include "duet/model/generate.hpp"
 #include "duet/monitor/executive_account_layout.hpp"
+#include "duet/xcp/host/epk.hpp"
 #include "duet/xcp/host/master.hpp"
 #include "duet/xcp/host/values.hpp"
 
@@ -228,6 +229,7 @@ class MonitorTarget::Impl {
     if (!channel) return Failure{channel.error()};
     Master master{std::move(channel).value(), timeout};
     if (auto connected = master.connect(); !connected) return Failure{connected.error()};
+    if (Status same = check_epk(master, options_.a2l); !same) return same;
     ++connects_;
     {
       const std::lock_guard lock{mutex_};

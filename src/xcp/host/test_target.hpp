@@ -59,10 +59,14 @@ struct TestTarget {
   std::array<std::uint8_t, 8> parameters{};
   std::array<std::uint8_t, 8> reference{1, 2, 3, 4, 5, 6, 7, 8};
   const std::uint8_t* volatile ecu_page = parameters.data();
-  std::array<MemoryRegion, 1> regions{MemoryRegion{.name = "signals",
-                                                   .address = 0x1000,
-                                                   .size = sizeof(Signals),
-                                                   .memory = reinterpret_cast<std::uint8_t*>(&signals)}};
+  std::array<char, 14> epk{"duet_target 1"};  // what its A2L names it by
+  std::array<MemoryRegion, 2> regions{
+      MemoryRegion{.name = "signals",
+                   .address = 0x1000,
+                   .size = sizeof(Signals),
+                   .memory = reinterpret_cast<std::uint8_t*>(&signals)},
+      MemoryRegion{
+          .name = "epk", .address = 0x4000, .size = 13, .memory = reinterpret_cast<std::uint8_t*>(epk.data())}};
   std::array<CalibrationSegment, 1> segments{CalibrationSegment{.name = "parameters",
                                                                 .address = 0x2000,
                                                                 .size = 8,
@@ -127,6 +131,8 @@ struct TestTarget {
     description.events = {{"1 ms", 0, 1, 6, 0}, {"10 ms", 1, 10, 6, 0}};
     description.max_cto = 32;
     description.max_dto = 64;
+    description.epk = "duet_target 1";
+    description.epk_address = 0x4000;
     description.transport = transport;
     return description;
   }
