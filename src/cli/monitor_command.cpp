@@ -40,6 +40,7 @@ ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
   if (!text) return fail(streams, text.error());
   auto a2l = xcp::host::read_a2l(text.value(), options.a2l_file);
   if (!a2l) return fail(streams, a2l.error());
+  for (const std::string& warning : a2l.value().warnings) streams.err << "duet monitor: warning: " << warning << '\n';
   xcp::host::Endpoint target = a2l.value().transport;
   if (!options.xcp.empty()) {
     auto parsed = xcp::host::parse_endpoint(options.xcp);

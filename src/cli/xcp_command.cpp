@@ -61,7 +61,7 @@ std::string daq_layout(const DaqProcessor& daq) {
 }
 
 ExitCode run_info(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, true);
+  auto session = open_session(options, true, streams.err);
   if (!session) return report({session.error()}, streams);
   Master& master = *session.value().master;
   const SlaveProperties& slave = master.properties();
@@ -95,7 +95,7 @@ ExitCode run_info(const XcpOptions& options, Streams streams) {
 }
 
 ExitCode run_list(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, false);
+  auto session = open_session(options, false, streams.err);
   if (!session) return report({session.error()}, streams);
   if (!session.value().a2l) return report({"list needs --a2l FILE"}, streams);
   const A2lDescription& a2l = *session.value().a2l;
@@ -129,7 +129,7 @@ ExitCode run_list(const XcpOptions& options, Streams streams) {
 }
 
 ExitCode run_read(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, true);
+  auto session = open_session(options, true, streams.err);
   if (!session) return report({session.error()}, streams);
   Master& master = *session.value().master;
   json values = json::object();
@@ -164,7 +164,7 @@ ExitCode run_read(const XcpOptions& options, Streams streams) {
 }
 
 ExitCode run_write(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, true);
+  auto session = open_session(options, true, streams.err);
   if (!session) return report({session.error()}, streams);
   Master& master = *session.value().master;
   for (const std::string& assignment : options.targets) {
@@ -179,7 +179,7 @@ ExitCode run_write(const XcpOptions& options, Streams streams) {
 ExitCode run_checksum(const XcpOptions& options, Streams streams) {
   auto address = parse_number(options.address);
   if (!address) return report({address.error()}, streams);
-  auto session = open_session(options, true);
+  auto session = open_session(options, true, streams.err);
   if (!session) return report({session.error()}, streams);
   auto checksum = session.value().master->checksum(0, address.value(), options.size);
   if (!checksum) return report({checksum.error()}, streams);
@@ -198,7 +198,7 @@ ExitCode run_checksum(const XcpOptions& options, Streams streams) {
 }
 
 ExitCode run_page(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, true);
+  auto session = open_session(options, true, streams.err);
   if (!session) return report({session.error()}, streams);
   Master& master = *session.value().master;
   const auto segment = static_cast<std::uint8_t>(options.segment);

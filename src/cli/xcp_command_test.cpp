@@ -59,6 +59,17 @@ TEST_F(XcpCommand, AnA2lOfAnotherFirmwareIsRefusedAtConnect) {
   EXPECT_EQ(target.parameters[0], 0);  // nothing written
 }
 
+// What the reader leaves out of another tool's A2L is said, not dropped in silence.
+TEST_F(XcpCommand, WhatTheA2lReaderLeavesOutIsSaid) {
+  std::string text = write_a2l(TestTarget::a2l({Protocol::tcp, "127.0.0.1", target.server.port()}));
+  text.insert(text.find("  /end MODULE"), "    /begin BLOB recording \"a blob\" 0x1000 4 /end BLOB\n");
+  std::ofstream{a2l_file} << text;
+  const Outcome list = run({"xcp", "list", "--a2l", a2l_file});
+  EXPECT_EQ(list.exit_code, ExitCode::success) << list.err;
+  EXPECT_NE(list.err.find("duet xcp: warning: " + a2l_file + ":"), std::string::npos) << list.err;
+  EXPECT_NE(list.err.find(": BLOB is not read\n"), std::string::npos) << list.err;
+}
+
 TEST_F(XcpCommand, ListsTheA2l) {
   const Outcome list = run({"xcp", "list", "--a2l", a2l_file, "--json"});
   ASSERT_EQ(list.exit_code, ExitCode::success) << list.err;

@@ -69,7 +69,7 @@ Result<std::vector<TimedWrite>> parse_timed_writes(const Session& session, const
 }  // namespace
 
 ExitCode run_record(const XcpOptions& options, Streams streams) {
-  auto session = open_session(options, true);
+  auto session = open_session(options, true, streams.err);
   if (!session) return report({session.error()}, streams);
   if (!session.value().a2l) return report({"record needs --a2l FILE"}, streams);
   const A2lDescription& a2l = *session.value().a2l;

@@ -29,12 +29,13 @@ const Variable* find_variable(const A2lDescription& a2l, const std::string& name
 
 }  // namespace
 
-Result<Session> open_session(const XcpOptions& options, bool needs_master) {
+Result<Session> open_session(const XcpOptions& options, bool needs_master, std::ostream& warnings) {
   Session session;
   if (!options.a2l_file.empty()) {
     auto a2l = load_a2l(options.a2l_file);
     if (!a2l) return Failure{a2l.error()};
     session.a2l = std::move(a2l).value();
+    for (const std::string& warning : session.a2l->warnings) warnings << "duet xcp: warning: " << warning << '\n';
   }
   if (!needs_master) return session;
   Endpoint endpoint;

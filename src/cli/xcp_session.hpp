@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,8 @@ struct Session {
 };
 
 // Reads --a2l if given and, if `needs_master`, connects to --connect or else to the A2L's transport.
-[[nodiscard]] Result<Session> open_session(const XcpOptions& options, bool needs_master);
+// What the A2L reader left out of the file is said on `warnings`, a line each.
+[[nodiscard]] Result<Session> open_session(const XcpOptions& options, bool needs_master, std::ostream& warnings);
 
 // A MEASUREMENT or CHARACTERISTIC of the session's A2L by name.
 [[nodiscard]] Result<const xcp::host::Variable*> variable_named(const Session& session, const std::string& name);
