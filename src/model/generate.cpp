@@ -445,8 +445,9 @@ class FileWriter {
   // RECORD_LAYOUT's ROW_DIR). A vector or a scalar needs none beyond its count.
   static std::vector<std::uint32_t> matrix_dimensions(const std::vector<std::size_t>& shape) {
     if (shape.size() < 2) return {};
-    std::vector<std::uint32_t> dimensions;
-    for (const std::size_t extent : shape) dimensions.push_back(static_cast<std::uint32_t>(extent));
+    std::vector<std::uint32_t> dimensions(shape.size());
+    std::transform(shape.begin(), shape.end(), dimensions.begin(),
+                   [](std::size_t extent) { return static_cast<std::uint32_t>(extent); });
     return dimensions;
   }
 

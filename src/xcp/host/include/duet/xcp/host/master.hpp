@@ -123,7 +123,7 @@ class Master {
   void take_asynchronous(std::vector<std::uint8_t> packet);
   void take_daq(std::span<const std::uint8_t> packet);
   // The layout of the ODT a DAQ packet names, or nullptr.
-  const OdtLayout* odt_of(std::span<const std::uint8_t> packet, std::uint8_t odt_number) const;
+  [[nodiscard]] const OdtLayout* odt_of(std::span<const std::uint8_t> packet, std::uint8_t odt_number) const;
   std::int64_t unwrap(std::uint32_t timestamp);
 
   std::unique_ptr<MasterChannel> channel_;
