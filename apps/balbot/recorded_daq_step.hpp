@@ -17,8 +17,10 @@ namespace duet::sil {
 inline double recorded_daq_step(const std::string& a2l, const std::string& url) {
   const TemporaryFile csv{"daq_step.csv"};
   Program record{DUET_PROGRAM,
+                 // A long timeout: until the emulated firmware's line is open, the bridge answers ERR_CMD_BUSY,
+                 // which the master repeats its command for, up to the timeout.
                  {"xcp", "record", "--a2l", a2l, "--connect", url, "--signal", "theta", "--event", "rate 1",
-                  "--duration", "10", "--output", csv.path()},
+                  "--duration", "10", "--timeout", "10000", "--output", csv.path()},
                  "record"};
   EXPECT_EQ(record.wait(), 0) << record.errors();
   auto text = read_text_file(csv.path());

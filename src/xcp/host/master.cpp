@@ -4,7 +4,9 @@
 #include "duet/xcp/host/master.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <thread>
 
 #include "command_packet.hpp"
 #include "duet/xcp/protocol.hpp"
@@ -59,11 +61,20 @@ Result<std::vector<std::uint8_t>> Master::exchange(std::span<const std::uint8_t>
   }
 }
 
+// ERR_CMD_BUSY asks for the command again: the standard's answer is to wait and repeat it. A slave still busy with
+// something, or a bridge whose line to the slave is not open yet, says it; the master repeats until its timeout has
+// passed since the first try.
 Result<std::vector<std::uint8_t>> Master::command(std::span<const std::uint8_t> request, std::string_view name) {
-  auto answer = exchange(request, name);
-  if (!answer) return answer;
-  if (answer.value()[0] == pid::error) return Failure{error_message(name, answer.value())};
-  return answer;
+  const auto give_up = std::chrono::steady_clock::now() + timeout_;
+  for (;;) {
+    auto answer = exchange(request, name);
+    if (!answer) return answer;
+    const std::vector<std::uint8_t>& packet = answer.value();
+    if (packet[0] != pid::error) return answer;
+    const bool busy = packet.size() > 1 && packet[1] == static_cast<std::uint8_t>(Error::cmd_busy);
+    if (!busy || std::chrono::steady_clock::now() >= give_up) return Failure{error_message(name, packet)};
+    std::this_thread::sleep_for(std::chrono::milliseconds{10});
+  }
 }
 
 Result<SlaveProperties> Master::connect() {

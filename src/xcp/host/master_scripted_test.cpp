@@ -41,6 +41,23 @@ std::vector<DaqSample> samples_of(Master& master, std::size_t count) {
 
 constexpr const char* ok4 = "FF 00 00 00";  // a positive response padded to 4 bytes
 
+// ERR_CMD_BUSY is the standard's "wait and repeat": the master repeats the command (here CONNECT twice, as a bridge
+// whose line to the slave is not open yet answers) and goes on; any other error ends the command.
+TEST(MasterAgainstScriptedSlave, RepeatsACommandTheSlaveIsTooBusyFor) {
+  ScriptedSlave slave{{
+      {"FF 00", {"FE 10"}},
+      {"FF 00", {"FE 10"}},
+      {"FF 00", {"FF 01 00 08 08 00 01 01"}},  // CAL/PAG only: no DAQ questions follow
+      {"F6 00 00 00 00 10 00 00", {"FE 24"}},  // ERR_ACCESS_DENIED is not repeated
+  }};
+  Master master = connected_master(slave);
+  ASSERT_TRUE(master.connect().ok());
+  const auto uploaded = master.upload(0, 0x1000, 4);
+  ASSERT_FALSE(uploaded.ok());
+  EXPECT_EQ(uploaded.error(), "SET_MTA: ERR_ACCESS_DENIED (0x24)");
+  EXPECT_EQ(slave.differences(), "");
+}
+
 TEST(MasterAgainstScriptedSlave, RelativeOdtAndAlignedDaqWordWithPaddingAndIdentificationInTheResponse) {
   ScriptedSlave slave{{
       {"FF 00", {"FF 05 80 FF DC 05 01 01"}},  // CAL/PAG and DAQ, Intel, MAX_CTO 255, MAX_DTO 1500
