@@ -73,6 +73,7 @@ Result<std::vector<std::uint8_t>> Master::command(std::span<const std::uint8_t> 
     if (packet[0] != pid::error) return answer;
     const bool busy = packet.size() > 1 && packet[1] == static_cast<std::uint8_t>(Error::cmd_busy);
     if (!busy || std::chrono::steady_clock::now() >= give_up) return Failure{error_message(name, packet)};
+    channel_->restart_counter();
     std::this_thread::sleep_for(std::chrono::milliseconds{10});
   }
 }

@@ -29,6 +29,9 @@ class MasterChannel {
 
   // Counter values missing from the slave's CTR sequence: packets the link or the slave lost.
   [[nodiscard]] std::uint64_t counter_gaps() const { return counter_gaps_; }
+  // The next packet starts the CTR sequence afresh: after ERR_CMD_BUSY, which a bridge in front of the slave may
+  // have said with a counter of its own, the slave's sequence takes over.
+  void restart_counter() { expected_counter_.reset(); }
   [[nodiscard]] std::uint64_t bytes_received() const { return bytes_received_; }
 
  private:
