@@ -126,10 +126,11 @@ class FileWriter {
     auto priorities = task_priorities(program_);
     if (!priorities) return Failure{priorities.error()};
     priorities_ = priorities.value().priorities;
+    const xcp::host::A2lDescription a2l = a2l_description();
     return std::vector<GeneratedFile>{{name_ + ".hpp", header()},
                                       {name_ + ".cpp", source()},
-                                      {name_ + "_xcp.hpp", xcp_header()},
-                                      {name_ + ".a2l", a2l()},
+                                      {name_ + "_xcp.hpp", xcp_header(a2l.epk)},
+                                      {name_ + ".a2l", banner("/*", source_, " */") + xcp::host::write_a2l(a2l)},
                                       {name_ + ".cmake", cmake()}};
   }
 
@@ -285,7 +286,7 @@ class FileWriter {
     return text + "\n}  // namespace " + name_ + "\n";
   }
 
-  std::string xcp_header() const {
+  std::string xcp_header(const std::string& epk) const {
     const XcpSettings& limits = program_.model->xcp;
     std::string text = banner("//", source_);
     text +=
@@ -305,7 +306,7 @@ class FileWriter {
         "// The EPK: this generation of the model, as the A2L's MOD_PAR says it; a master uploads it from "
         "epk_address\n";
     text += "// (or asks GET_ID) to know that it talks to the firmware the A2L describes.\n";
-    text += "inline constexpr char epk[] = " + quoted(epk()) + ";\n\n";
+    text += "inline constexpr char epk[] = " + quoted(epk) + ";\n\n";
     text += "// The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).\n";
     text += "inline constexpr std::uint8_t max_cto = " + std::to_string(limits.max_cto) + ";\n";
     text += "inline constexpr std::uint16_t max_dto = " + std::to_string(limits.max_dto) + ";\n";
@@ -428,15 +429,12 @@ class FileWriter {
     return text;
   }
 
-  std::string a2l() const { return banner("/*", source_, " */") + xcp::host::write_a2l(a2l_description()); }
-
-  // The EPK names this generation of the model: what a master compares to know that the firmware it talks to is the
-  // one the A2L describes. It is the model's name and a hash of everything the A2L says but the EPK itself.
-  std::string epk() const { return name_ + " " + content_hash(xcp::host::write_a2l(a2l_without_epk())); }
-
+  // The A2L's description with its EPK, which names this generation of the model: what a master compares to know
+  // that the firmware it talks to is the one the A2L describes. It is the model's name and a hash of everything the
+  // A2L says but the EPK itself.
   xcp::host::A2lDescription a2l_description() const {
     xcp::host::A2lDescription description = a2l_without_epk();
-    description.epk = epk();
+    description.epk = name_ + " " + content_hash(xcp::host::write_a2l(description));
     description.epk_address = epk_xcp_address;
     return description;
   }
@@ -459,11 +457,9 @@ class FileWriter {
     description.max_cto = static_cast<std::uint8_t>(limits.max_cto);
     description.max_dto = static_cast<std::uint16_t>(limits.max_dto);
     description.max_daq_lists = static_cast<std::uint16_t>(limits.daq_lists);
-    // What the slave answers in GET_DAQ_RESOLUTION_INFO: the largest entry that fits a DAQ packet after its
-    // identification and timestamp.
-    description.max_odt_entry_size = static_cast<std::uint8_t>(std::min<std::uint32_t>(
-        0xFF, limits.max_dto - static_cast<std::uint32_t>(duet::xcp::identification_size(identification())) -
-                  limits.timestamp_bytes));
+    // What the slave answers in GET_DAQ_RESOLUTION_INFO.
+    description.max_odt_entry_size = duet::xcp::max_odt_entry_size(
+        limits.max_dto, identification(), static_cast<duet::xcp::TimestampSize>(limits.timestamp_bytes));
     description.identification_field = identification();
     description.timestamp_size = static_cast<std::uint8_t>(limits.timestamp_bytes);
     const duet::xcp::SlaveConfiguration slave_defaults;

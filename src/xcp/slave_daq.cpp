@@ -125,9 +125,8 @@ void Slave::stop_all_daq() {
   }
 }
 
-std::size_t Slave::first_packet_header_size() const {
-  return identification_size(configuration_.identification_field) +
-         static_cast<std::size_t>(configuration_.timestamp_size);
+std::uint8_t Slave::max_entry_size() const {
+  return max_odt_entry_size(configuration_.max_dto, configuration_.identification_field, configuration_.timestamp_size);
 }
 
 std::size_t Slave::odt_payload(const DaqList& list, std::size_t odt_index) const {
@@ -234,7 +233,7 @@ Slave::Result Slave::write_daq_entry(std::uint8_t bit_offset, std::uint8_t size,
   if (configuration_.daq.lists[daq_pointer_list_].running.load(std::memory_order_relaxed)) {
     return fail(Error::daq_active);
   }
-  if (bit_offset != no_bit_offset || size == 0 || size > configuration_.max_dto - first_packet_header_size()) {
+  if (bit_offset != no_bit_offset || size == 0 || size > max_entry_size()) {
     return fail(Error::out_of_range);
   }
   const std::uint8_t* memory = readable_memory(extension, address, size);
@@ -391,12 +390,9 @@ Slave::Result Slave::get_daq_processor_info(PacketReader&, PacketWriter& respons
 
 // NOLINTNEXTLINE(readability-make-member-function-const): every handler has the table's signature
 Slave::Result Slave::get_daq_resolution_info(PacketReader&, PacketWriter& response) {
-  // An entry must fit the first packet of a sample, after the identification and the timestamp.
-  const std::size_t room = configuration_.max_dto - first_packet_header_size();
-  const auto max_entry = static_cast<std::uint8_t>(room > 0xFF ? 0xFF : room);
   const auto timestamp_mode = static_cast<std::uint8_t>(static_cast<std::uint8_t>(configuration_.timestamp_size) |
                                                         (configuration_.timestamp_unit << 4U));
-  response.u8(1).u8(max_entry).u8(1).u8(0).u8(timestamp_mode).u16(configuration_.timestamp_ticks);
+  response.u8(1).u8(max_entry_size()).u8(1).u8(0).u8(timestamp_mode).u16(configuration_.timestamp_ticks);
   return ok;
 }
 

@@ -26,6 +26,14 @@ constexpr std::size_t identification_size(IdentificationField field) { return st
 // Bytes of the slave's clock in the first DAQ packet of a sample (GET_DAQ_RESOLUTION_INFO's TIMESTAMP_MODE bits 0-2).
 enum class TimestampSize : std::uint8_t { byte = 1, word = 2, dword = 4 };
 
+// The largest ODT entry a slave samples (GET_DAQ_RESOLUTION_INFO's and the A2L's MAX_ODT_ENTRY_SIZE_DAQ): what fits
+// the first packet of a sample after its identification and timestamp, at most a byte's worth. The slave answers it
+// and duet gen writes it into the A2L, from this one place.
+constexpr std::uint8_t max_odt_entry_size(std::size_t max_dto, IdentificationField field, TimestampSize timestamp) {
+  const std::size_t room = max_dto - identification_size(field) - static_cast<std::size_t>(timestamp);
+  return static_cast<std::uint8_t>(room > 0xFF ? 0xFF : room);
+}
+
 // An event channel, as GET_DAQ_EVENT_INFO and the A2L describe it.
 struct EventChannel {
   std::string_view name;

@@ -189,8 +189,8 @@ class Slave {
   static void sample_in_usual_layout(Slave& slave, std::uint16_t event);  // absolute ODT numbers, 4-byte Intel stamps
   static void sample_in_other_layout(Slave& slave, std::uint16_t event);
   static void sample_nothing(Slave& slave, std::uint16_t event);
-  // Bytes before the entries in a sample's first packet: the identification field and the timestamp.
-  [[nodiscard]] std::size_t first_packet_header_size() const;
+  // The largest entry WRITE_DAQ takes: what fits a sample's first packet (duet/xcp/daq.hpp).
+  [[nodiscard]] std::uint8_t max_entry_size() const;
 
   // Memory at an XCP address: a calibration segment's page XCP chose, else a declared region; nullptr if neither
   // holds all `size` bytes (readable, or writable).
