@@ -10,7 +10,7 @@
 
 namespace duet::xcp::host {
 
-class CommandPacket {
+class CommandPacket : public OrderedFieldWriter<CommandPacket> {
  public:
   CommandPacket(Command command, ByteOrder order) : order_(order) {
     bytes_.push_back(static_cast<std::uint8_t>(command));
@@ -20,16 +20,7 @@ class CommandPacket {
     bytes_.push_back(value);
     return *this;
   }
-  CommandPacket& u16(std::uint16_t value) {
-    const auto low = static_cast<std::uint8_t>(value);
-    const auto high = static_cast<std::uint8_t>(value >> 8U);
-    return order_ == ByteOrder::intel ? u8(low).u8(high) : u8(high).u8(low);
-  }
-  CommandPacket& u32(std::uint32_t value) {
-    const auto low = static_cast<std::uint16_t>(value);
-    const auto high = static_cast<std::uint16_t>(value >> 16U);
-    return order_ == ByteOrder::intel ? u16(low).u16(high) : u16(high).u16(low);
-  }
+  [[nodiscard]] ByteOrder order() const { return order_; }
   CommandPacket& bytes(std::span<const std::uint8_t> values) {
     bytes_.insert(bytes_.end(), values.begin(), values.end());
     return *this;

@@ -47,7 +47,27 @@ class PacketReader {
   ByteOrder order_;
 };
 
-class PacketWriter {
+// Multi-byte fields in a byte order, written through the derived writer's u8() and order(): the slave's responses
+// (PacketWriter) and the master's commands (duet::xcp::host::CommandPacket) order their fields here.
+template <typename Writer>
+class OrderedFieldWriter {
+ public:
+  constexpr Writer& u16(std::uint16_t value) {
+    const auto low = static_cast<std::uint8_t>(value);
+    const auto high = static_cast<std::uint8_t>(value >> 8U);
+    return self().order() == ByteOrder::intel ? self().u8(low).u8(high) : self().u8(high).u8(low);
+  }
+  constexpr Writer& u32(std::uint32_t value) {
+    const auto low = static_cast<std::uint16_t>(value);
+    const auto high = static_cast<std::uint16_t>(value >> 16U);
+    return self().order() == ByteOrder::intel ? u16(low).u16(high) : u16(high).u16(low);
+  }
+
+ private:
+  constexpr Writer& self() { return static_cast<Writer&>(*this); }
+};
+
+class PacketWriter : public OrderedFieldWriter<PacketWriter> {
  public:
   constexpr explicit PacketWriter(std::span<std::uint8_t> buffer, ByteOrder order = ByteOrder::intel)
       : buffer_(buffer), order_(order) {}
@@ -60,16 +80,7 @@ class PacketWriter {
     }
     return *this;
   }
-  constexpr PacketWriter& u16(std::uint16_t value) {
-    const auto low = static_cast<std::uint8_t>(value);
-    const auto high = static_cast<std::uint8_t>(value >> 8U);
-    return order_ == ByteOrder::intel ? u8(low).u8(high) : u8(high).u8(low);
-  }
-  constexpr PacketWriter& u32(std::uint32_t value) {
-    const auto low = static_cast<std::uint16_t>(value);
-    const auto high = static_cast<std::uint16_t>(value >> 16U);
-    return order_ == ByteOrder::intel ? u16(low).u16(high) : u16(high).u16(low);
-  }
+  [[nodiscard]] constexpr ByteOrder order() const { return order_; }
   constexpr PacketWriter& bytes(std::span<const std::uint8_t> values) {
     for (std::uint8_t value : values) u8(value);
     return *this;
