@@ -486,6 +486,7 @@ class FileWriter {
       if (parameter.minimum) variable.minimum = *parameter.minimum;
       if (parameter.maximum) variable.maximum = *parameter.maximum;
       variable.dimensions = matrix_dimensions(parameter.value.shape);
+      variable.labels = a2l_labels(parameter.labels);
       description.characteristics.push_back(variable);
     }
     for (const Field& field : signals_) {
@@ -499,6 +500,7 @@ class FileWriter {
       variable.unit = signal->unit;
       variable.dimensions = matrix_dimensions(signal->type.shape);
       variable.description = signal->description;
+      variable.labels = a2l_labels(signal->labels);
       description.measurements.push_back(variable);
     }
     add_executive_account(description);
@@ -544,6 +546,14 @@ class FileWriter {
                                                 field >= 2 ? "cycles" : ""));
       }
     }
+  }
+
+  static std::vector<xcp::host::Label> a2l_labels(const std::vector<std::string>& names) {
+    std::vector<xcp::host::Label> labels;
+    for (std::size_t value = 0; value < names.size(); ++value) {
+      labels.push_back({static_cast<double>(value), names[value]});
+    }
+    return labels;
   }
 
   static xcp::host::Variable a2l_variable(const Field& field, std::uint32_t base) {

@@ -56,6 +56,27 @@ void only(const YAML::Node& map, const std::string& where, std::initializer_list
   }
 }
 
+// `labels: [initialising, balancing, stopped]`: value k is named labels[k], so that tools show the name (an A2L
+// verbal conversion). Only booleans (false's name, then true's) and integers name their values.
+std::vector<std::string> labels(const YAML::Node& node, std::optional<DataType> type, const std::string& what) {
+  if (!node.IsSequence() || node.size() < 2) fail(node, what + ": labels is a list of at least two names");
+  if (!type || !(*type == DataType::boolean || is_integer(*type))) {
+    fail(node, what + ": only a boolean or an integer type names its values", "declare its type");
+  }
+  if (*type == DataType::boolean && node.size() != 2) fail(node, what + ": a boolean has two labels, false's and true's");
+  if (!fits(static_cast<double>(node.size() - 1), *type)) {
+    fail(node, what + ": more labels than values of its type " + std::string{type_name(*type)});
+  }
+  std::vector<std::string> names;
+  for (const YAML::Node& label : node) {
+    const std::string name = label.IsScalar() ? label.Scalar() : std::string{};
+    if (name.empty() || name.find('"') != std::string::npos) fail(label, what + ": a label is a name without quotes");
+    if (std::find(names.begin(), names.end(), name) != names.end()) fail(label, what + ": '" + name + "' twice");
+    names.push_back(name);
+  }
+  return names;
+}
+
 YAML::Node map_of(const YAML::Node& node, const std::string& what) {
   if (!node.IsMap()) fail(node, what + " must be a map of fields");
   return node;
@@ -432,7 +453,8 @@ Model model(const YAML::Node& root, const std::string& file) {
       if (!entry.second.IsMap()) {
         parameter.value = literal(entry.second, "parameter " + parameter.name);
       } else {
-        only(fields, "parameter " + parameter.name, {"value", "type", "size", "unit", "min", "max", "description"});
+        only(fields, "parameter " + parameter.name,
+             {"value", "type", "size", "unit", "min", "max", "description", "labels"});
         if (!fields["value"]) fail(entry.second, "parameter " + parameter.name + " needs 'value'");
         parameter.value = literal(fields["value"], "parameter " + parameter.name);
         if (fields["type"]) parameter.type = data_type(fields["type"]);
@@ -441,6 +463,7 @@ Model model(const YAML::Node& root, const std::string& file) {
         if (fields["min"]) parameter.minimum = number(fields["min"], "min");
         if (fields["max"]) parameter.maximum = number(fields["max"], "max");
         if (fields["description"]) parameter.description = fields["description"].Scalar();
+        if (fields["labels"]) parameter.labels = labels(fields["labels"], parameter.type, "parameter " + parameter.name);
         if (parameter.minimum && parameter.maximum && *parameter.minimum > *parameter.maximum) {
           fail(fields["min"], "parameter " + parameter.name + ": min is above max");
         }
@@ -465,11 +488,12 @@ Model model(const YAML::Node& root, const std::string& file) {
       signal.name = identifier(entry.first, "a signal");
       signal.location = location_of(entry.first);
       map_of(entry.second, "signal " + signal.name);
-      only(entry.second, "signal " + signal.name, {"type", "size", "unit", "measurable", "description"});
+      only(entry.second, "signal " + signal.name, {"type", "size", "unit", "measurable", "description", "labels"});
       if (entry.second["type"]) signal.type = data_type(entry.second["type"]);
       if (entry.second["size"]) signal.shape = shape(entry.second["size"]);
       if (entry.second["unit"]) signal.unit = entry.second["unit"].Scalar();
       if (entry.second["description"]) signal.description = entry.second["description"].Scalar();
+      if (entry.second["labels"]) signal.labels = labels(entry.second["labels"], signal.type, "signal " + signal.name);
       if (const YAML::Node measurable = entry.second["measurable"]) {
         if (!YAML::convert<bool>::decode(measurable, signal.measurable))
           fail(measurable, "measurable is true or false");

@@ -41,6 +41,7 @@ parameters:
 signals:
   theta: {type: single, unit: deg, measurable: true}
   buffer: {type: uint8, size: 12}
+  state: {type: boolean, labels: [stopped, "running fast"]}
 blocks:
   - {name: toggle, type: Not, inputs: {u: state_delayed}, outputs: {y: state}}
   - {name: delay, type: UnitDelay, period_us: 1000, parameters: {initial: false}, inputs: {u: state},
@@ -63,12 +64,13 @@ blocks:
   EXPECT_DOUBLE_EQ(m.parameters[1].value.elements[1], 1e-3);
   EXPECT_EQ(m.signals[1].shape, std::vector<std::size_t>{12});
   EXPECT_TRUE(m.signals[0].measurable);
+  EXPECT_EQ(m.signals[2].labels, (std::vector<std::string>{"stopped", "running fast"}));
   ASSERT_EQ(m.blocks.size(), 3U);
   EXPECT_EQ(m.blocks[1].period.kind, Period::Kind::multiple);
   EXPECT_EQ(m.blocks[1].period.multiple, 10);
   EXPECT_DOUBLE_EQ(m.blocks[1].parameters[0].second.literal->elements[0], 0.0);  // false
   EXPECT_EQ(m.blocks[0].inputs[0].signal, "state_delayed");
-  EXPECT_EQ(m.blocks[0].location.line, 14);
+  EXPECT_EQ(m.blocks[0].location.line, 15);
   EXPECT_EQ(m.blocks[2].trigger.kind, Trigger::Kind::interrupt);
   EXPECT_EQ(m.blocks[2].trigger.priority, 6);
   EXPECT_EQ(m.blocks[2].blocks[0].parameters[0].second.reference, "Kp");
@@ -210,6 +212,18 @@ const Malformed corpus[] = {
      "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {measurable: often}\nblocks:\n  - "
      "{name: g, type: Gain}\n",
      "m.yaml:5:19: error: measurable is true or false"},
+    {"labels_of_a_float",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: single, labels: [a, b]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:5:29: error: signal x: only a boolean or an integer type names its values (declare its type)"},
+    {"labels_of_a_boolean",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: boolean, labels: [a, b, c]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:5:30: error: signal x: a boolean has two labels, false's and true's"},
+    {"labels_repeated",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: uint8, labels: [a, b, a]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:5:35: error: signal x: 'a' twice"},
+    {"labels_alone",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: uint8, labels: [a]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "m.yaml:5:28: error: signal x: labels is a list of at least two names"},
 };
 
 class MalformedModel : public ::testing::TestWithParam<Malformed> {};

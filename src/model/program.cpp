@@ -100,6 +100,7 @@ class ProgramBuilder {
           signal.unit = declaration.unit;
           signal.description = declaration.description;
           signal.measurable = declaration.measurable;
+          signal.labels = declaration.labels;
         }
         signal_of[output] = program_.signals.size();
         program_.signals.push_back(signal);

@@ -33,7 +33,8 @@ TEST(A2lCheck, WhatDuetWritesPasses) {
   a2l.module = "robot";
   a2l.memory = {{"signals", 0, 0x1000, 0x100, false}, {"parameters", 0, 0x2000, 0x100, true}};
   a2l.measurements = {{"theta", "tilt", DataType::float32, 0, 0x1000, 1, "deg", -90, 90, {}},
-                      {"wheels", "", DataType::int16, 0, 0x1004, 4, "rpm", -500, 500, {0.5, 0}, {2, 2}}};
+                      {"wheels", "", DataType::int16, 0, 0x1004, 4, "rpm", -500, 500, {0.5, 0}, {}, {2, 2}},
+                      {"state", "", DataType::uint8, 0, 0x100C, 1, "", 0, 1, {}, {{0, "off"}, {1, "on"}}}};
   a2l.characteristics = {{"gains", "", DataType::float32, 0, 0x2000, 3, "", 0, 100, {}}};
   a2l.events = {{"DMA2_Stream2", 0, 0, 6, 1}, {"DMA2_Stream3", 1, 0, 6, 2}, {"1 ms", 2, 1, 6, 0}};
   a2l.epk = "robot 1.0";

@@ -30,6 +30,7 @@ constexpr std::string_view time_units[] = {"UNIT_1NS",   "UNIT_10NS", "UNIT_100N
 struct CompuMethod {
   Conversion conversion;
   std::string unit;
+  std::string verbal_table;  // TAB_VERB: the COMPU_VTAB that names the raw values
 };
 
 // One item of a record layout: where it sits among the others (its position) and what it holds.
@@ -180,6 +181,8 @@ class Reader {
   void index_definitions(const Block& block) {
     if (block.keyword == "COMPU_METHOD") {
       read_compu_method(block);
+    } else if (block.keyword == "COMPU_VTAB") {
+      read_verbal_table(block);
     } else if (block.keyword == "RECORD_LAYOUT") {
       read_record_layout(block);
     } else if (block.keyword.starts_with("TYPEDEF_") && !block.values.empty()) {
@@ -209,11 +212,41 @@ class Reader {
       } else {
         method.conversion = {c[5] / c[1], -c[2] / c[1]};
       }
+    } else if (const Token* table = after(block, "COMPU_TAB_REF"); type->value == "TAB_VERB" && table != nullptr) {
+      method.verbal_table = table->value;
     } else if (type->value != "IDENTICAL") {
       warn(block.place,
            "COMPU_METHOD " + name->value + ": " + type->value + " conversions are not applied (raw values)");
     }
     compu_methods_[name->value] = method;
+  }
+
+  // name LongIdentifier TAB_VERB NumberValuePairs, then the pairs: raw value, its text (DEFAULT_VALUE is left out).
+  void read_verbal_table(const Block& block) {
+    const Token* name = value(block, 0, "the table's name");
+    const Token* pairs = value(block, 3, "the number of value pairs");
+    if (name == nullptr || pairs == nullptr) return;
+    const std::uint64_t count = integer(pairs).value_or(0);
+    std::vector<Label> labels;
+    for (std::size_t index = 4; labels.size() < count && index + 1 < block.values.size(); index += 2) {
+      if (block.values[index].value.starts_with("DEFAULT_VALUE")) break;
+      const std::optional<double> raw = real(&block.values[index]);
+      if (!raw) return;
+      labels.push_back({*raw, block.values[index + 1].value});
+    }
+    if (labels.size() != count) {
+      fail(pairs->place, "COMPU_VTAB " + name->value + ": " + pairs->value + " value pairs announced, " +
+                             std::to_string(labels.size()) + " follow");
+      return;
+    }
+    verbal_tables_[name->value] = std::move(labels);
+  }
+
+  std::vector<Label> verbal_table(const std::string& name, const Token& conversion) {
+    const auto table = verbal_tables_.find(name);
+    if (table != verbal_tables_.end()) return table->second;
+    fail(conversion.place, "COMPU_METHOD " + conversion.value + ": no COMPU_VTAB named '" + name + "'");
+    return {};
   }
 
   std::vector<double> reals_after(const Block& block, std::string_view keyword, std::size_t count) {
@@ -414,6 +447,7 @@ class Reader {
       if (method != compu_methods_.end()) {
         variable.conversion = method->second.conversion;
         variable.unit = method->second.unit;
+        if (!method->second.verbal_table.empty()) variable.labels = verbal_table(method->second.verbal_table, *conversion);
       } else if (conversion->value != "NO_COMPU_METHOD") {
         fail(conversion->place, variable.name + ": no COMPU_METHOD named '" + conversion->value + "'");
       }
@@ -683,6 +717,7 @@ class Reader {
 
   const a2l_syntax::Tree& tree_;
   std::map<std::string, CompuMethod, std::less<>> compu_methods_;
+  std::map<std::string, std::vector<Label>, std::less<>> verbal_tables_;
   std::map<std::string, RecordLayout, std::less<>> record_layouts_;
   std::map<std::string, std::string, std::less<>> units_;
   Alignments module_alignments_;

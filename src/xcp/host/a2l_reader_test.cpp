@@ -42,6 +42,11 @@ TEST_F(EngineA2l, ReadsConversionsAndUnitsFromAnIncludedFile) {
   EXPECT_EQ(measurement("cylinder_temperatures").dimensions, (std::vector<std::uint32_t>{2, 2}));
 }
 
+TEST_F(EngineA2l, ReadsNamedValuesFromAVerbalTable) {
+  EXPECT_EQ(measurement("gear").labels, (std::vector<Label>{{0, "neutral"}, {1, "first"}, {2, "second"}}));
+  EXPECT_TRUE(measurement("coolant").labels.empty());
+}
+
 TEST_F(EngineA2l, ExpandsInstancesOfStructuresIntoTheirMembers) {
   EXPECT_EQ(measurement("front_left.speed").address, 0x20001010U);
   EXPECT_EQ(measurement("front_left.slip").address, 0x20001012U);
@@ -98,7 +103,6 @@ TEST_F(EngineA2l, SaysWhatItLeavesOut) {
   EXPECT_EQ(a2l.warnings,
             (std::vector<std::string>{
                 file + ":32:18: big-endian values (MSB_FIRST) are read as little-endian",
-                file + ":60:5: COMPU_METHOD gear_names: TAB_VERB conversions are not applied (raw values)",
                 file + ":69:5: COMPU_METHOD pedal: TAB_INTP conversions are not applied (raw values)",
                 file + ":86:18: engine_speed: big-endian values (MSB_FIRST) are read as little-endian",
                 file + ":100:16: flags: BIT_MASK 0x0F is not applied (the whole value is read)",
@@ -111,6 +115,13 @@ std::string engine_with(const std::string& from, const std::string& to) {
   std::string changed = text.value();
   changed.replace(changed.find(from), from.size(), to);
   return changed;
+}
+
+TEST(A2lReader, AVerbalConversionNeedsItsWholeTable) {
+  const auto missing = read_a2l(engine_with("COMPU_TAB_REF gear_table", "COMPU_TAB_REF gears"), engine_file());
+  EXPECT_EQ(missing.error(), engine_file() + ":95:54: COMPU_METHOD gear_names: no COMPU_VTAB named 'gears'");
+  const auto short_table = read_a2l(engine_with("TAB_VERB 3", "TAB_VERB 4"), engine_file());
+  EXPECT_EQ(short_table.error(), engine_file() + ":63:51: COMPU_VTAB gear_table: 4 value pairs announced, 3 follow");
 }
 
 TEST(A2lReader, AnIncludeItCannotFindIsAnErrorNamingTheFile) {

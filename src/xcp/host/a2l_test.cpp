@@ -14,6 +14,8 @@ A2lDescription robot() {
       {"theta", "tilt angle", DataType::float32, 0, 0x1000, 1, "deg", -90, 90, {}},
       {"battery", "battery voltage, raw ADC", DataType::uint16, 0, 0x1004, 1, "V", 0, 13.2, {0.0032, -0.1}},
       {"wheel_speeds", "left and right", DataType::int16, 0, 0x1008, 2, "rpm", -500, 500, {}},
+      {"state", "what the robot does", DataType::uint8, 0, 0x100C, 1, "", 0, 2, {},
+       {{0, "initialising"}, {1, "balancing"}, {2, "stopped"}}},
   };
   a2l.characteristics = {
       {"P", "proportional gain", DataType::float32, 0, 0x2000, 1, "", 0, 100, {}},
@@ -41,6 +43,17 @@ TEST(A2l, TheDefaultsAreTodaysSlave) {
   EXPECT_NE(text.find("/begin CHECKSUM XCP_CRC_16_CITT MAX_BLOCK_SIZE 0xFFFF EXTERNAL_FUNCTION \"\" /end CHECKSUM"),
             std::string::npos);
   EXPECT_NE(text.find("/begin PAGE 1 "), std::string::npos);
+}
+
+TEST(A2l, NamedValuesAreAVerbalConversionWithItsTable) {
+  const std::string text = write_a2l(robot());
+  EXPECT_NE(text.find("/begin MEASUREMENT state \"what the robot does\" UBYTE duet_verbal_state "), std::string::npos);
+  EXPECT_NE(text.find("/begin COMPU_METHOD duet_verbal_state \"\" TAB_VERB \"%12.0\" \"\" COMPU_TAB_REF "
+                      "duet_verbal_state_table /end COMPU_METHOD"),
+            std::string::npos);
+  EXPECT_NE(text.find("/begin COMPU_VTAB duet_verbal_state_table \"\" TAB_VERB 3 0 \"initialising\" 1 \"balancing\" "
+                      "2 \"stopped\" /end COMPU_VTAB"),
+            std::string::npos);
 }
 
 TEST(A2l, TheFileIsPlainForTools) {

@@ -69,6 +69,7 @@ std::string_view checksum_keyword(ChecksumType type) {
 
 // One COMPU_METHOD per distinct conversion and unit, named after them.
 std::string conversion_name(const Variable& variable) {
+  if (!variable.labels.empty()) return "duet_verbal_" + variable.name;
   if (variable.conversion == Conversion{}) return "duet_identity";
   return "duet_linear_" + variable.name;
 }
@@ -83,6 +84,16 @@ void write_variable_common(std::ostringstream& out, const Variable& variable) {
   } else if (variable.count > 1) {
     out << "      MATRIX_DIM " << variable.count << "\n";
   }
+}
+
+// A TAB_VERB conversion and its table: the raw values a master shows by name.
+void write_verbal_conversion(std::ostringstream& out, const Variable& variable) {
+  const std::string name = conversion_name(variable);
+  out << "    /begin COMPU_METHOD " << name << R"( "" TAB_VERB "%12.0" "" COMPU_TAB_REF )" << name
+      << "_table /end COMPU_METHOD\n";
+  out << "    /begin COMPU_VTAB " << name << "_table \"\" TAB_VERB " << variable.labels.size();
+  for (const Label& label : variable.labels) out << " " << number(label.raw) << " " << quoted(label.text);
+  out << " /end COMPU_VTAB\n";
 }
 
 bool covers(const MemoryInfo& memory, std::uint32_t address, std::size_t size) {
@@ -260,6 +271,10 @@ std::string write_a2l(const A2lDescription& a2l) {
   out << "    /begin COMPU_METHOD duet_identity \"\" IDENTICAL \"%12.6\" \"\" /end COMPU_METHOD\n";
   for (const std::vector<Variable>* list : {&a2l.measurements, &a2l.characteristics}) {
     for (const Variable& variable : *list) {
+      if (!variable.labels.empty()) {
+        write_verbal_conversion(out, variable);
+        continue;
+      }
       if (variable.conversion == Conversion{}) continue;
       out << "    /begin COMPU_METHOD " << conversion_name(variable) << R"( "" LINEAR "%12.6" )"
           << quoted(variable.unit) << " COEFFS_LINEAR " << number(variable.conversion.factor) << " "

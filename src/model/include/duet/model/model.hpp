@@ -32,6 +32,7 @@ struct Parameter {
   std::optional<double> minimum;
   std::optional<double> maximum;
   std::string description;
+  std::vector<std::string> labels;  // value k's name (a choice, a state); empty: a number
   Location location;
 };
 
@@ -48,6 +49,7 @@ struct SignalDeclaration {
   std::string unit;
   bool measurable = false;
   std::string description;
+  std::vector<std::string> labels;  // value k's name (a state, a choice); empty: a number
   Location location;
 };
 

@@ -38,6 +38,7 @@ struct ProgramSignal {
   SignalType type;
   std::string unit;
   std::string description;
+  std::vector<std::string> labels;  // value k's name
   bool measurable = false;
   std::size_t driver = 0;  // the block that drives it
   // A Constant block's output that names a tunable parameter is that parameter, read where it is used, so that

@@ -32,6 +32,13 @@ struct Conversion {
   bool operator==(const Conversion&) const = default;
 };
 
+// A raw value's name in a verbal conversion (COMPU_METHOD TAB_VERB, COMPU_VTAB): what a master shows instead of it.
+struct Label {
+  double raw = 0.0;
+  std::string text;
+  bool operator==(const Label&) const = default;
+};
+
 // An axis of a CURVE or MAP, as the reader found it: where a master finds its points.
 struct Axis {
   enum class Kind : std::uint8_t {
@@ -62,6 +69,8 @@ struct Variable {
   double minimum = 0.0;
   double maximum = 0.0;
   Conversion conversion;
+  // A verbal conversion: raw values shown by name (a state, a choice); empty: numbers. Replaces `conversion`.
+  std::vector<Label> labels;
   // The array's dimensions (MATRIX_DIM), their product `count`; empty: one dimension of `count`.
   std::vector<std::uint32_t> dimensions;
   // A CURVE's or MAP's axes, x first (read only: the writer writes values and arrays).
