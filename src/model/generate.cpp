@@ -59,7 +59,7 @@ const std::set<std::string>& keywords() {
       // Names the generated code uses itself.
       "signals", "state", "parameters", "p", "description", "memory", "tasks", "initialize", "terminate",
       "parameter_page", "reference_parameters", "parameters_in_use", "block_inputs", "block_outputs",
-      "block_parameters", "value", "i", "std", "duet", "code", "xcp"};
+      "block_parameters", "value", "i", "std", "duet", "code", "xcp", "Limits", "parameter_limits"};
   return words;
 }
 
@@ -182,6 +182,7 @@ class FileWriter {
     text += "// The tunable parameters: the calibration segment. `parameters` is the working page (RAM) that XCP\n";
     text += "// writes, `reference_parameters` the model's values (flash); the steps read the page `parameter_page`\n";
     text += "// points to (XCP's SET_CAL_PAGE switches it).\nstruct Parameters {\n" + members(parameters_) + "};\n\n";
+    text += parameter_limits();
     text += "// Signals that XCP measures or that outlive a step.\nstruct Signals {\n" + members(signals_) + "};\n\n";
     for (const ProgramBlock& block : program_.blocks) {
       if (block.block->code) text += code_structures(program_, block) + "\n";
@@ -546,6 +547,21 @@ class FileWriter {
                                                 field >= 2 ? "cycles" : ""));
       }
     }
+  }
+
+  // The limits of the scalar parameters that have both, for what else offers them to be set (an application
+  // channel): one set of limits, the A2L's.
+  [[nodiscard]] std::string parameter_limits() const {
+    std::string list;
+    for (const Parameter& parameter : program_.model->parameters) {
+      if (!parameter.minimum || !parameter.maximum || parameter.value.elements.size() != 1) continue;
+      list += "inline constexpr Limits " + parameter.name + "{" + format_number(*parameter.minimum) + ", " +
+              format_number(*parameter.maximum) + "};\n";
+    }
+    if (list.empty()) return {};
+    return "// The parameters' limits (min and max in the model, the A2L's LowerLimit and UpperLimit).\n"
+           "struct Limits {\n  double minimum;\n  double maximum;\n};\nnamespace parameter_limits {\n" +
+           list + "}  // namespace parameter_limits\n\n";
   }
 
   static std::vector<xcp::host::Label> a2l_labels(const std::vector<std::string>& names) {

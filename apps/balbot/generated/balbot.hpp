@@ -44,6 +44,20 @@ struct Parameters {
   float kalman_R[4];
 };
 
+// The parameters' limits (min and max in the model, the A2L's LowerLimit and UpperLimit).
+struct Limits {
+  double minimum;
+  double maximum;
+};
+namespace parameter_limits {
+inline constexpr Limits P{-1, 1};
+inline constexpr Limits I{-10, 10};
+inline constexpr Limits D{-1, 1};
+inline constexpr Limits N{0, 1000};
+inline constexpr Limits target{-20, 20};
+inline constexpr Limits stop_angle{0, 90};
+}  // namespace parameter_limits
+
 // Signals that XCP measures or that outlive a step.
 struct Signals {
   bool sensor_ready;

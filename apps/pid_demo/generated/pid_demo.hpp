@@ -42,6 +42,23 @@ struct Parameters {
   float dead_band;
 };
 
+// The parameters' limits (min and max in the model, the A2L's LowerLimit and UpperLimit).
+struct Limits {
+  double minimum;
+  double maximum;
+};
+namespace parameter_limits {
+inline constexpr Limits Kp{0, 1};
+inline constexpr Limits Ki{0, 10};
+inline constexpr Limits Kd{0, 1};
+inline constexpr Limits N{0, 1000};
+inline constexpr Limits angle_limit{0, 90};
+inline constexpr Limits trim{-5, 5};
+inline constexpr Limits stall_limit{0, 1};
+inline constexpr Limits disturbance{-10000, 10000};
+inline constexpr Limits dead_band{0, 1};
+}  // namespace parameter_limits
+
 // Signals that XCP measures or that outlive a step.
 struct Signals {
   float reference;
