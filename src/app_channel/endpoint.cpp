@@ -176,6 +176,13 @@ void Endpoint::set(std::span<const std::uint8_t> request) {
   answer(index, status);
 }
 
+bool Endpoint::report(std::size_t parameter) {
+  if (parameter >= application_.parameters.size()) return false;
+  const std::uint32_t dropped = answers_dropped_.load(std::memory_order_relaxed);
+  answer(static_cast<std::uint8_t>(parameter), ParameterStatus::reported);
+  return answers_dropped_.load(std::memory_order_relaxed) == dropped;
+}
+
 void Endpoint::answer(std::uint8_t index, ParameterStatus status) {
   const std::size_t value_size =
       index < application_.parameters.size() ? size_of(application_.parameters[index].type) : 0;
@@ -221,6 +228,11 @@ std::size_t Endpoint::next_description_packet(std::span<std::uint8_t> packet) {
         .f64(item.maximum)
         .text(item.name, max_name_length)
         .text(item.unit, max_unit_length);
+    if (!item.labels.empty()) {
+      const std::size_t count = item.labels.size() < max_labels ? item.labels.size() : max_labels;
+      writer.u8(static_cast<std::uint8_t>(count));
+      for (std::size_t label = 0; label < count; ++label) writer.text(item.labels[label], max_label_length);
+    }
   } else if (step == 2 + telemetry + parameters) {
     writer.u8(static_cast<std::uint8_t>(Message::described));
   } else {

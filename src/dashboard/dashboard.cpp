@@ -17,7 +17,14 @@ struct Dashboard::Timer {
 namespace {
 
 json item_json(const Item& item) {
-  return {{"name", item.name}, {"unit", item.unit}, {"type", item.type}, {"min", item.minimum}, {"max", item.maximum}};
+  json described = {
+      {"name", item.name}, {"unit", item.unit}, {"type", item.type}, {"min", item.minimum}, {"max", item.maximum}};
+  if (!item.labels.empty()) {
+    json labels = json::array();
+    for (const auto& [value, text] : item.labels) labels.push_back({{"value", value}, {"text", text}});
+    described["labels"] = std::move(labels);
+  }
+  return described;
 }
 
 json recorder_json(Recorder::State state, const TriggerSettings& settings, const Description& description) {

@@ -63,6 +63,9 @@ TEST_F(MonitorTargetTest, DescribesTheA2lsSignalsAndParametersAndSamplesThemByDa
   ASSERT_EQ((*description)["parameters"].size(), 4U);  // gain, scaled, flags[0], flags[1]
   EXPECT_EQ((*description)["parameters"][1]["unit"], "V");
   EXPECT_EQ((*description)["parameters"][3]["name"], "flags[1]");
+  EXPECT_EQ((*description)["parameters"][3]["labels"],
+            json::parse(R"([{"value": 0, "text": "clear"}, {"value": 1, "text": "set"}])"));  // the A2L's COMPU_VTAB
+  EXPECT_FALSE((*description)["parameters"][0].contains("labels"));
 
   // A block of DAQ samples: the counter goes up by one per sample, and `twice` is twice it.
   std::optional<json> block;

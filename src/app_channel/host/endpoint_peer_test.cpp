@@ -257,5 +257,76 @@ TEST_F(AppChannel, AnswersThatFindTheQueueFullAreCounted) {
   EXPECT_LT(endpoint.answers_dropped(), 8U);  // the room kept for answers took some
 }
 
+TEST_F(AppChannel, AValueChangedByOtherMeansIsReported) {
+  exchange();
+  reports.clear();
+  robot.p = 0.05F;  // as the application would after taking a gain from elsewhere
+  EXPECT_TRUE(endpoint.report(0));
+  EXPECT_FALSE(endpoint.report(9));
+  exchange();
+  ASSERT_EQ(reports.size(), 1U);
+  EXPECT_EQ(reports[0].status, ParameterStatus::reported);
+  EXPECT_FLOAT_EQ(static_cast<float>(*reports[0].value), 0.05F);
+}
+
+TEST(AppChannelLabels, NamedValuesArriveWithTheirNames) {
+  std::uint8_t state = 1;
+  std::uint8_t controller = 0;
+  static constexpr const char* state_names[] = {"initialising", "balancing", "stopped"};
+  static constexpr const char* controller_names[] = {"PID", "LQR"};
+  const std::array<Item, 1> telemetry{named_item("state", state, state_names)};
+  const std::array<Item, 1> parameters{named_item("controller", controller, controller_names)};
+  const Application application{"robot", 10000, telemetry, parameters};
+  std::array<std::uint8_t, 512> ring{};
+  xcp::TransmitQueue queue{ring, {}};
+  std::array<std::uint8_t, decoder_buffer_size> decoder_buffer{};
+  std::array<std::uint8_t, max_packet> packet_buffer{};
+  Endpoint endpoint{application, queue, {}, decoder_buffer, packet_buffer};
+  std::vector<Description> descriptions;
+  Peer peer{{.description = [&](const Description& d) { descriptions.push_back(d); }}};
+  std::array<std::uint8_t, 256> line{};
+  while (const std::size_t sent = endpoint.transmit(line)) peer.receive(std::span{line}.first(sent));
+  ASSERT_EQ(descriptions.size(), 1U);
+  EXPECT_EQ(descriptions[0].telemetry[0].labels, (std::vector<std::string>{"initialising", "balancing", "stopped"}));
+  EXPECT_DOUBLE_EQ(descriptions[0].telemetry[0].maximum, 2);
+  EXPECT_EQ(descriptions[0].parameters[0].labels, (std::vector<std::string>{"PID", "LQR"}));
+  EXPECT_FALSE(peer.set_request("controller", 2).ok());  // beyond the last name
+}
+
+// Item packets as docs/APP_CHANNEL.md lays them out, written here byte by byte: with value names, and without them as
+// firmware before names sent them.
+TEST(AppChannelLabels, ThePcReadsItemsWithAndWithoutNames) {
+  std::vector<Description> descriptions;
+  std::vector<std::string> problems;
+  Peer peer{{.description = [&](const Description& d) { descriptions.push_back(d); },
+             .problem = [&](const std::string& p) { problems.push_back(p); }}};
+  std::uint16_t counter = 0;
+  const auto send = [&](std::vector<std::uint8_t> packet) {
+    std::vector<std::uint8_t> bytes(framing.frame_size(packet.size()));
+    bytes.resize(xcp::write_frame(framing, bytes, counter++, packet));
+    peer.receive(bytes);
+  };
+  const auto item = [](std::uint8_t index, std::vector<std::uint8_t> tail) {
+    std::vector<std::uint8_t> packet{0x02, 0, index, 1};  // item, telemetry, index, uint8
+    for (int k = 0; k < 8; ++k) packet.push_back(0);      // minimum 0.0
+    packet.insert(packet.end(), {0, 0, 0, 0, 0, 0, 0xF0, 0x3F});  // maximum 1.0
+    packet.insert(packet.end(), tail.begin(), tail.end());
+    return packet;
+  };
+  send({0x01, 1, 1, 'r', 0x10, 0x27, 0, 0, 2, 0});                  // hello: version 1, "r", 10000 us, 2 and 0 items
+  send(item(0, {2, 'o', 'n', 0, 2, 2, 'n', 'o', 3, 'y', 'e', 's'}));  // "on", no unit, names "no" and "yes"
+  send(item(1, {1, 'x', 1, 'V'}));                                  // "x" in V, no names
+  send({0x03});
+  EXPECT_TRUE(problems.empty()) << problems.front();
+  ASSERT_EQ(descriptions.size(), 1U);
+  EXPECT_EQ(descriptions[0].telemetry[0].name, "on");
+  EXPECT_EQ(descriptions[0].telemetry[0].labels, (std::vector<std::string>{"no", "yes"}));
+  EXPECT_EQ(descriptions[0].telemetry[1].unit, "V");
+  EXPECT_TRUE(descriptions[0].telemetry[1].labels.empty());
+  send(item(0, {2, 'o', 'n', 0, 3, 2, 'n', 'o'}));  // three names announced, one follows
+  ASSERT_EQ(problems.size(), 1U);
+  EXPECT_EQ(problems[0], "an item description is malformed");
+}
+
 }  // namespace
 }  // namespace duet::app_channel

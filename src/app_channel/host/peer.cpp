@@ -52,6 +52,7 @@ class PacketReader {
   }
   // Every byte read and none missing.
   [[nodiscard]] bool complete() const { return !short_ && at_ == packet_.size(); }
+  [[nodiscard]] bool at_end() const { return at_ >= packet_.size(); }
 
  private:
   template <typename T>
@@ -157,6 +158,10 @@ void Peer::handle(std::span<const std::uint8_t> packet) {
       item.maximum = in.f64();
       item.name = in.text();
       item.unit = in.text();
+      if (!in.at_end()) {
+        item.labels.resize(in.u8());
+        for (std::string& label : item.labels) label = in.text();
+      }
       if (!in.complete() || !is_value_type(type) || kind > 1) return problem("an item description is malformed");
       if (!incoming_) return;  // joined in the middle of a description: wait for the next hello
       auto& items = kind == 0 ? incoming_->telemetry : incoming_->parameters;

@@ -127,7 +127,8 @@ struct TestTarget {
                                 {"slow", "every second step", DataType::uint8, 0, 0x1006, 1, "", 0, 255, {}}};
     description.characteristics = {{"gain", "a gain", DataType::float32, 0, 0x2000, 1, "", 0, 100, {}},
                                    {"scaled", "a scaled word", DataType::uint16, 0, 0x2004, 1, "V", 0, 10, {0.01, 0}},
-                                   {"flags", "two bytes", DataType::uint8, 0, 0x2006, 2, "", 0, 255, {}}};
+                                   {"flags", "two bytes", DataType::uint8, 0, 0x2006, 2, "", 0, 255, {},
+                                    {{0, "clear"}, {1, "set"}}}};
     description.events = {{"1 ms", 0, 1, 6, 0}, {"10 ms", 1, 10, 6, 0}};
     description.max_cto = 32;
     description.max_dto = 64;

@@ -25,11 +25,19 @@ struct Item {
   double minimum;
   double maximum;
   void* address;
+  // Value k's name (a state, a choice), at most max_labels of at most max_label_length bytes; none: a number.
+  std::span<const char* const> labels{};
 };
 
 template <typename T>
 constexpr Item item(const char* name, const char* unit, T& variable, double minimum, double maximum) {
   return {name, unit, value_type_of<T>(), minimum, maximum, &variable};
+}
+
+// An integer item whose values 0, 1, ... are named: its limits are the first and the last name.
+template <typename T>
+constexpr Item named_item(const char* name, T& variable, std::span<const char* const> labels) {
+  return {name, "", value_type_of<T>(), 0, static_cast<double>(labels.size()) - 1, &variable, labels};
 }
 
 struct Application {
@@ -79,6 +87,10 @@ class Endpoint {
 
   // Bytes from the line, in any pieces.
   void receive(std::span<const std::uint8_t> bytes);
+
+  // Queues a parameter's value as it is now (status `reported`): for a value that changed by other means than a
+  // set, so that the other side shows what is in effect. False, and counted with the answers, if it did not fit.
+  bool report(std::size_t parameter);
 
   // Frames what is to be sent into `out`; returns the bytes written.
   std::size_t transmit(std::span<std::uint8_t> out);

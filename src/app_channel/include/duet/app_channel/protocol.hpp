@@ -20,12 +20,17 @@ inline constexpr std::size_t max_packet = 256;
 inline constexpr std::size_t decoder_buffer_size = framing.frame_size(max_packet);
 inline constexpr std::size_t max_name_length = 63;
 inline constexpr std::size_t max_unit_length = 15;
+// An item's value names: with the longest name and unit they keep an item packet within max_packet.
+inline constexpr std::size_t max_labels = 8;
+inline constexpr std::size_t max_label_length = 15;
 
 // A packet's first byte.
 enum class Message : std::uint8_t {
   // From the firmware.
   hello = 0x01,  // version u8, application name str, telemetry period us u32, telemetry count u8, parameter count u8
-  item = 0x02,   // kind u8, index u8, type u8, minimum f64, maximum f64, name str, unit str
+  // kind u8, index u8, type u8, minimum f64, maximum f64, name str, unit str, then optionally label count u8 and
+  // that many str: the names of the values 0, 1, ...
+  item = 0x02,
   described = 0x03,  // (the description is complete)
   telemetry = 0x04,  // sample u32, then every telemetry item's value in order, each as its type
   parameter = 0x05,  // index u8, status u8, the parameter's value now, as its type

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <utility>
+
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -25,6 +27,8 @@ struct Item {
   std::string type;  // float32, uint16, ...
   double minimum = 0;
   double maximum = 0;
+  // Value names (a state, a choice): shown instead of the value; empty: a number.
+  std::vector<std::pair<double, std::string>> labels;
 };
 
 struct Description {

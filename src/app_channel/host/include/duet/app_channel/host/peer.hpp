@@ -23,6 +23,7 @@ struct ItemDescription {
   ValueType type = ValueType::f32;
   double minimum = 0;
   double maximum = 0;
+  std::vector<std::string> labels;  // value k's name; empty: a number
 };
 
 struct Description {
