@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "duet/model/model_file.hpp"
@@ -19,8 +20,10 @@ namespace {
 // One run of the model against the robot; columns by name ("theta", "plant.theta_deg", ...).
 class RobotRun {
  public:
+  // `tuning` at the start; `written` (time, name, value) as XCP writes them during the run.
   RobotRun(const plant::BalbotScenario& scenario, double duration_s,
-           const std::vector<std::pair<std::string, double>>& tuning = {}) {
+           const std::vector<std::pair<std::string, double>>& tuning = {},
+           const std::vector<std::tuple<double, std::string, double>>& written = {}) {
     auto model = load_model(DUET_BALBOT_MODEL);
     EXPECT_TRUE(model.ok()) << model.error();
     model_ = std::move(model).value();
@@ -30,14 +33,19 @@ class RobotRun {
     plant_ = plant::make_balbot_plant(scenario);
     SimulationOptions options;
     options.duration_s = duration_s;
-    options.before_tick = [this, tuning](std::uint64_t tick, Interpreter& interpreter) {
-      if (tick != 0) return;
-      for (const auto& [name, value] : tuning) {
+    options.before_tick = [this, tuning, written](std::uint64_t tick, Interpreter& interpreter) {
+      const auto set = [this, &interpreter](const std::string& name, double value) {
         const auto& parameters = model_.parameters;
         const auto found = std::find_if(parameters.begin(), parameters.end(),
                                         [&name](const Parameter& parameter) { return parameter.name == name; });
         ASSERT_NE(found, parameters.end()) << name;
         interpreter.set_parameter(static_cast<std::size_t>(found - parameters.begin()), 0, value);
+      };
+      if (tick == 0) {
+        for (const auto& [name, value] : tuning) set(name, value);
+      }
+      for (const auto& [time_s, name, value] : written) {
+        if (tick == tick_at(time_s)) set(name, value);
       }
     };
     auto simulated = simulate(*program_, *plant_, options);
@@ -102,8 +110,8 @@ TEST(Balbot, ThePidTakesTheGainsLinuxSends) {
   plant::BalbotScenario scenario = released_at_five_degrees();
   scenario.ipc_messages.push_back({3, {0, 0, 0, 63, 0, 0, 0, 0, 0, 0, 128, 62}});
   const RobotRun run{scenario, 4};
-  EXPECT_EQ(run.at("gains_from_linux", 2.9), 0.0);
-  EXPECT_EQ(run.at("gains_from_linux", 3.1), 1.0);
+  EXPECT_EQ(run.at("gains_from", 2.9), 0.0);
+  EXPECT_EQ(run.at("gains_from", 3.1), 1.0);
   EXPECT_EQ(run.at("linux_gains[0]", 3.1), 0.5);
   EXPECT_EQ(run.at("linux_gains[2]", 3.1), 0.25);
   // The same run without the message: the same until 3 s (the LQR drives, the PID only computes), then the PID's
@@ -182,6 +190,37 @@ TEST(Balbot, AKnownBatteryVoltageReadsWithinOnePercent) {
     const RobotRun run{scenario, 1.2};  // the first conversion, at 0 s, while the driver stands by: no load
     EXPECT_NEAR(run.at("battery_voltage", 1.2), volts, 0.01 * volts) << volts;
   }
+}
+
+TEST(Balbot, TheSettingsInUseAreWhicheverWereWrittenLast) {
+  // Linux sends P = 0.5, I = 0, D = 0.25 at 3 s (no controller byte: the thesis' message, so the PID); XCP writes P at
+  // 3.5 s, which brings back the calibration's P, I, D and controller; Linux's next message at 4 s wins again.
+  plant::BalbotScenario scenario = released_at_five_degrees();
+  scenario.ipc_messages.push_back({3, {0, 0, 0, 63, 0, 0, 0, 0, 0, 0, 128, 62}});
+  scenario.ipc_messages.push_back({4, {0, 0, 0, 63, 0, 0, 0, 0, 0, 0, 128, 62, 1}});  // and the LQR
+  const RobotRun run{scenario, 4.2, {}, {{3.5, "P", 0.03}}};
+  const double calibrated_controller = run.at("controller", 2.9);
+  EXPECT_EQ(run.at("gains_from", 2.9), 0.0);  // the calibration's
+  EXPECT_FLOAT_EQ(static_cast<float>(run.at("p_gain", 2.9)), 0.0196F);
+  EXPECT_EQ(run.at("gains_from", 3.1), 1.0);  // Linux's
+  EXPECT_EQ(run.at("p_gain", 3.1), 0.5);
+  EXPECT_EQ(run.at("d_gain", 3.1), 0.25);
+  EXPECT_EQ(run.at("controller", 3.1), 0.0);  // PID
+  EXPECT_EQ(run.at("gains_from", 3.6), 0.0);  // the write over XCP
+  EXPECT_FLOAT_EQ(static_cast<float>(run.at("p_gain", 3.6)), 0.03F);
+  EXPECT_FLOAT_EQ(static_cast<float>(run.at("d_gain", 3.6)), 0.0187F);
+  EXPECT_EQ(run.at("controller", 3.6), calibrated_controller);
+  EXPECT_EQ(run.at("gains_from", 4.1), 1.0);
+  EXPECT_EQ(run.at("controller", 4.1), 1.0);  // LQR
+}
+
+TEST(Balbot, TheStateSaysInitialisingBalancingOrStopped) {
+  const RobotRun balancing{released_at_five_degrees(), 3};
+  EXPECT_EQ(balancing.at("robot_state", 1.0), 0.0);  // the sensor starts until 1.5 s
+  EXPECT_EQ(balancing.at("robot_state", 2.9), 1.0);
+  const RobotRun falling{released_at_five_degrees(), 5, {{"use_lqr", 0}, {"P", 0.0196}, {"I", 0}, {"D", 0.0187}}};
+  EXPECT_EQ(falling.at("robot_state", 4.9), 2.0);  // the thesis' PD lets it fall beyond 60 degrees
+  EXPECT_EQ(falling.at("stop", 4.9), 1.0);
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ namespace {
 constexpr std::size_t max_input_line = 4096;
 
 dashboard::Item item_of(const app_channel::host::ItemDescription& item) {
-  dashboard::Item described{item.name, item.unit, std::string{app_channel::host::name_of(item.type)}, item.minimum,
-                            item.maximum, {}};
+  dashboard::Item described{item.name,    item.unit,    std::string{app_channel::host::name_of(item.type)},
+                            item.minimum, item.maximum, {}};
   for (std::size_t value = 0; value < item.labels.size(); ++value) {
     described.labels.emplace_back(static_cast<double>(value), item.labels[value]);
   }

@@ -63,7 +63,8 @@ std::vector<std::string> labels(const YAML::Node& node, std::optional<DataType> 
   if (!type || !(*type == DataType::boolean || is_integer(*type))) {
     fail(node, what + ": only a boolean or an integer type names its values", "declare its type");
   }
-  if (*type == DataType::boolean && node.size() != 2) fail(node, what + ": a boolean has two labels, false's and true's");
+  if (*type == DataType::boolean && node.size() != 2)
+    fail(node, what + ": a boolean has two labels, false's and true's");
   if (!fits(static_cast<double>(node.size() - 1), *type)) {
     fail(node, what + ": more labels than values of its type " + std::string{type_name(*type)});
   }
@@ -463,7 +464,8 @@ Model model(const YAML::Node& root, const std::string& file) {
         if (fields["min"]) parameter.minimum = number(fields["min"], "min");
         if (fields["max"]) parameter.maximum = number(fields["max"], "max");
         if (fields["description"]) parameter.description = fields["description"].Scalar();
-        if (fields["labels"]) parameter.labels = labels(fields["labels"], parameter.type, "parameter " + parameter.name);
+        if (fields["labels"])
+          parameter.labels = labels(fields["labels"], parameter.type, "parameter " + parameter.name);
         if (parameter.minimum && parameter.maximum && *parameter.minimum > *parameter.maximum) {
           fail(fields["min"], "parameter " + parameter.name + ": min is above max");
         }

@@ -213,16 +213,20 @@ const Malformed corpus[] = {
      "{name: g, type: Gain}\n",
      "m.yaml:5:19: error: measurable is true or false"},
     {"labels_of_a_float",
-     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: single, labels: [a, b]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: single, labels: [a, b]}\nblocks:\n  - {name: "
+     "g, type: Gain}\n",
      "m.yaml:5:29: error: signal x: only a boolean or an integer type names its values (declare its type)"},
     {"labels_of_a_boolean",
-     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: boolean, labels: [a, b, c]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: boolean, labels: [a, b, c]}\nblocks:\n  - "
+     "{name: g, type: Gain}\n",
      "m.yaml:5:30: error: signal x: a boolean has two labels, false's and true's"},
     {"labels_repeated",
-     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: uint8, labels: [a, b, a]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: uint8, labels: [a, b, a]}\nblocks:\n  - "
+     "{name: g, type: Gain}\n",
      "m.yaml:5:35: error: signal x: 'a' twice"},
     {"labels_alone",
-     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: uint8, labels: [a]}\nblocks:\n  - {name: g, type: Gain}\n",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nsignals:\n  x: {type: uint8, labels: [a]}\nblocks:\n  - {name: g, "
+     "type: Gain}\n",
      "m.yaml:5:28: error: signal x: labels is a list of at least two names"},
 };
 

@@ -59,8 +59,12 @@ std::string type_name(DataType type) {
 }
 
 dashboard::Item item_of(const Element& element) {
-  dashboard::Item described{element.name(),           element.variable->unit,    type_name(element.variable->type),
-                            element.variable->minimum, element.variable->maximum, {}};
+  dashboard::Item described{element.name(),
+                            element.variable->unit,
+                            type_name(element.variable->type),
+                            element.variable->minimum,
+                            element.variable->maximum,
+                            {}};
   for (const xcp::host::Label& label : element.variable->labels) described.labels.emplace_back(label.raw, label.text);
   return described;
 }

@@ -259,7 +259,7 @@ std::vector<Example> examples() {
          return std::unique_ptr<plant::Plant>{plant::make_balbot_plant(scenario)};
        },
        {"sensor_ready", "stop", "theta", "y", "wheel_speed_left", "wheel_speed_right", "distance", "battery_voltage",
-        "linux_gains[0]", "gains_from_linux", "y_pid", "requests_sent"}},
+        "linux_gains[0]", "gains_from", "y_pid", "requests_sent"}},
       // Every block type the other examples leave out, fed by sources; at 1500 the transfer function's a1 and the
       // state space's A[1][0] are tuned.
       {"block_tour",

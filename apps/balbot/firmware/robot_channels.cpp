@@ -31,29 +31,53 @@ xcp::StreamTransport transport{slave.protocol(),   slave.queue(),        xcp::et
                                xcp_decoder_buffer, balbot::xcp::max_cto, xcp_packet_buffer};
 
 // The application channel: what the thesis' Linux application shows (theta, battery voltage, distance) and sets
-// (the PID's P, I, D), as the model sends and takes them.
-struct RobotMessage {
+// (the PID's P, I, D), as the model sends and takes them, and what is in effect: the controller, P, I and D in use,
+// whose they are (the calibration's or Linux's) and the robot's state.
+struct RobotMessage {  // the model's message, as its BytePack lays it out
   float theta;
   float battery;
   float distance;
+  float p_in_use;
+  float i_in_use;
+  float d_in_use;
+  std::uint8_t controller;  // 0 PID, 1 LQR
+  std::uint8_t gains_from;  // 0 calibration, 1 Linux
+  std::uint8_t robot_state;
 };
 RobotMessage telemetry{};
-struct Gains {
+struct Settings {  // the message to the model: P, I, D (the thesis') and the controller
   float p;
   float i;
   float d;
+  std::uint8_t use_lqr;
 };
-Gains gains{balbot::reference_parameters.P, balbot::reference_parameters.I, balbot::reference_parameters.D};
-Gains gains_sent = gains;  // what the model was last told
+constexpr std::size_t settings_bytes = 13;  // without the structure's padding
+Settings settings{balbot::reference_parameters.P, balbot::reference_parameters.I, balbot::reference_parameters.D,
+                  balbot::reference_parameters.use_lqr ? std::uint8_t{1} : std::uint8_t{0}};
+Settings settings_sent = settings;  // what the model was last told
 std::uint32_t telemetry_sample = 0;
 
-const app_channel::Item telemetry_items[] = {app_channel::item("theta", "deg", telemetry.theta, -90, 90),
-                                             app_channel::item("battery", "V", telemetry.battery, 0, 12.6),
-                                             app_channel::item("distance", "cm", telemetry.distance, 0, 400)};
-const app_channel::Item gain_items[] = {app_channel::item("P", "", gains.p, 0, 1),
-                                        app_channel::item("I", "", gains.i, 0, 1),
-                                        app_channel::item("D", "", gains.d, 0, 1)};
-const app_channel::Application application{"balbot", 10'000, telemetry_items, gain_items};
+constexpr const char* controller_names[] = {"PID", "LQR"};
+constexpr const char* source_names[] = {"calibration", "Linux"};
+constexpr const char* state_names[] = {"initialising", "balancing", "stopped"};
+namespace limits = balbot::parameter_limits;
+const app_channel::Item telemetry_items[] = {
+    app_channel::item("theta", "deg", telemetry.theta, -90, 90),
+    app_channel::item("battery", "V", telemetry.battery, 0, 12.6),
+    app_channel::item("distance", "cm", telemetry.distance, 0, 400),
+    app_channel::named_item("robot_state", telemetry.robot_state, state_names),
+    app_channel::named_item("controller", telemetry.controller, controller_names),
+    app_channel::named_item("gains_from", telemetry.gains_from, source_names),
+    app_channel::item("p_gain", "1/deg", telemetry.p_in_use, limits::P.minimum, limits::P.maximum),
+    app_channel::item("i_gain", "1/(deg s)", telemetry.i_in_use, limits::I.minimum, limits::I.maximum),
+    app_channel::item("d_gain", "s/deg", telemetry.d_in_use, limits::D.minimum, limits::D.maximum)};
+// The model's names, units and limits, as the A2L gives them to an XCP master.
+const app_channel::Item setting_items[] = {
+    app_channel::item("P", "1/deg", settings.p, limits::P.minimum, limits::P.maximum),
+    app_channel::item("I", "1/(deg s)", settings.i, limits::I.minimum, limits::I.maximum),
+    app_channel::item("D", "s/deg", settings.d, limits::D.minimum, limits::D.maximum),
+    app_channel::named_item("use_lqr", settings.use_lqr, controller_names)};
+const app_channel::Application application{"balbot", 10'000, telemetry_items, setting_items};
 std::array<std::uint8_t, 4096> application_queue_storage{};
 xcp::TransmitQueue application_queue{application_queue_storage, interrupt_lock};
 std::array<std::uint8_t, app_channel::decoder_buffer_size> application_decoder_buffer{};
@@ -68,19 +92,43 @@ void bytes_to(std::span<const double> bytes, T& value) {
   std::memcpy(&value, raw.data(), raw.size());
 }
 
+// Bit for bit, so that a NaN written over XCP counts as the same value each time.
+bool same_bits(const Settings& a, const Settings& b) {
+  return std::bit_cast<std::uint32_t>(a.p) == std::bit_cast<std::uint32_t>(b.p) &&
+         std::bit_cast<std::uint32_t>(a.i) == std::bit_cast<std::uint32_t>(b.i) &&
+         std::bit_cast<std::uint32_t>(a.d) == std::bit_cast<std::uint32_t>(b.d) && a.use_lqr == b.use_lqr;
+}
+
+// The channel's P, I, D and controller follow what the model uses, so that a write over XCP shows on Linux's side
+// too. Not while a set from Linux is on its way to the model (it would be undone before it arrived).
+void show_the_settings_in_use() {
+  const Settings in_use{telemetry.p_in_use, telemetry.i_in_use, telemetry.d_in_use, telemetry.controller};
+  std::array<bool, 4> changed{};
+  {
+    const cortex_m::InterruptMask masked;
+    if (!same_bits(settings, settings_sent) || same_bits(settings, in_use)) return;
+    changed = {std::bit_cast<std::uint32_t>(settings.p) != std::bit_cast<std::uint32_t>(in_use.p),
+               std::bit_cast<std::uint32_t>(settings.i) != std::bit_cast<std::uint32_t>(in_use.i),
+               std::bit_cast<std::uint32_t>(settings.d) != std::bit_cast<std::uint32_t>(in_use.d),
+               settings.use_lqr != in_use.use_lqr};
+    settings = in_use;
+    settings_sent = in_use;
+  }
+  for (std::size_t index = 0; index < changed.size(); ++index) {
+    if (changed[index]) (void)endpoint.report(index);  // a full queue loses the report (counted with the answers)
+  }
+}
+
 }  // namespace
 
 xcp::StreamTransport& xcp_transport() { return transport; }
 app_channel::Endpoint& application_endpoint() { return endpoint; }
 
 void tell_the_model_of_new_gains() {
-  const bool changed = std::bit_cast<std::uint32_t>(gains.p) != std::bit_cast<std::uint32_t>(gains_sent.p) ||
-                       std::bit_cast<std::uint32_t>(gains.i) != std::bit_cast<std::uint32_t>(gains_sent.i) ||
-                       std::bit_cast<std::uint32_t>(gains.d) != std::bit_cast<std::uint32_t>(gains_sent.d);
-  if (!changed) return;
   {
     const cortex_m::InterruptMask masked;
-    gains_sent = gains;
+    if (same_bits(settings, settings_sent)) return;
+    settings_sent = settings;
   }
   pend_gains_task();
 }
@@ -97,15 +145,16 @@ void publish_executive(const app_channel::ExecutiveReport& report) {
 
 void send_to_linux(std::span<const double> message_bytes) {
   bytes_to(message_bytes, telemetry);
+  show_the_settings_in_use();
   endpoint.publish(telemetry_sample++);
   kick_application();
 }
 
 void receive_from_linux(std::span<double> message_bytes) {
-  std::array<std::uint8_t, sizeof(Gains)> raw{};
+  std::array<std::uint8_t, settings_bytes> raw{};
   {
     const cortex_m::InterruptMask masked;
-    std::memcpy(raw.data(), &gains_sent, raw.size());
+    std::memcpy(raw.data(), &settings_sent, raw.size());
   }
   for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0.0;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // What the robot's firmware says to Linux, on every board: XCP (the model's parameters, its signals and the
 // executive's account at the A2L's addresses, an event per task) and the application channel (theta, battery voltage
-// and distance out; the PID's P, I, D in, which reach the model as the thesis' IPCC_RX1 message does). The board
+// and distance out, with what is in effect: the controller, the gains in use, whose they are, the robot's state; the
+// PID's P, I, D and the controller in, which reach the model as the thesis' IPCC_RX1 message does). The board
 // carries the bytes, on QEMU's UARTs (pil/) or on the STM32MP15's RPMsg ttys (board/), and supplies the functions
 // marked so; robot_channels.cpp is the rest.
 
@@ -29,10 +30,11 @@ void tell_the_model_of_new_gains();
 // For the model and the executive.
 // After task `task` (its index in the task table) ran: DAQ samples its event.
 void on_task_finished(std::size_t task);
-// The model's message to Linux (IpcSend: theta, battery voltage, distance as little-endian floats), published on the
-// application channel.
+// The model's message to Linux (IpcSend: theta, battery voltage, distance, P, I, D in use as little-endian floats;
+// the controller, whose settings, the robot's state as bytes), published on the application channel.
 void send_to_linux(std::span<const double> message_bytes);
-// The message Linux sent last (IpcReceive: P, I, D as little-endian floats), as the model reads it.
+// The message Linux sent last (IpcReceive: P, I, D as little-endian floats, a byte 1 for the LQR), as the model reads
+// it.
 void receive_from_linux(std::span<double> message_bytes);
 // The executive's account for the dashboard's Status page, on the application channel (from the background loop).
 void publish_executive(const duet::app_channel::ExecutiveReport& report);

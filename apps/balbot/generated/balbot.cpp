@@ -54,30 +54,39 @@ static_assert(offsetof(Signals, estimate) == 52, "the A2L's layout");
 static_assert(offsetof(Signals, theta) == 60, "the A2L's layout");
 static_assert(offsetof(Signals, theta_rate) == 64, "the A2L's layout");
 static_assert(offsetof(Signals, error) == 68, "the A2L's layout");
-static_assert(offsetof(Signals, y_pid) == 72, "the A2L's layout");
-static_assert(offsetof(Signals, position) == 76, "the A2L's layout");
-static_assert(offsetof(Signals, speed) == 80, "the A2L's layout");
-static_assert(offsetof(Signals, y_lqr) == 84, "the A2L's layout");
-static_assert(offsetof(Signals, y) == 88, "the A2L's layout");
-static_assert(offsetof(Signals, stop) == 92, "the A2L's layout");
-static_assert(offsetof(Signals, standby_off) == 93, "the A2L's layout");
-static_assert(offsetof(Signals, left_in1) == 94, "the A2L's layout");
-static_assert(offsetof(Signals, left_in2) == 95, "the A2L's layout");
-static_assert(offsetof(Signals, duty_percent) == 96, "the A2L's layout");
-static_assert(offsetof(Signals, speed_left_captured) == 100, "the A2L's layout");
-static_assert(offsetof(Signals, travelled_left) == 104, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_left) == 108, "the A2L's layout");
-static_assert(offsetof(Signals, speed_right_captured) == 112, "the A2L's layout");
-static_assert(offsetof(Signals, travelled_right) == 116, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_right) == 120, "the A2L's layout");
-static_assert(offsetof(Signals, echo_captured) == 124, "the A2L's layout");
-static_assert(offsetof(Signals, distance) == 128, "the A2L's layout");
-static_assert(offsetof(Signals, adc_samples_received) == 132, "the A2L's layout");
-static_assert(offsetof(Signals, battery_voltage) == 332, "the A2L's layout");
-static_assert(offsetof(Signals, gains_received) == 336, "the A2L's layout");
-static_assert(offsetof(Signals, linux_gains) == 348, "the A2L's layout");
-static_assert(offsetof(Signals, gains_from_linux) == 360, "the A2L's layout");
-static_assert(sizeof(Signals) == 364);
+static_assert(offsetof(Signals, gains_from) == 72, "the A2L's layout");
+static_assert(offsetof(Signals, p_gain) == 76, "the A2L's layout");
+static_assert(offsetof(Signals, i_gain) == 80, "the A2L's layout");
+static_assert(offsetof(Signals, d_gain) == 84, "the A2L's layout");
+static_assert(offsetof(Signals, controller) == 88, "the A2L's layout");
+static_assert(offsetof(Signals, y_pid) == 92, "the A2L's layout");
+static_assert(offsetof(Signals, position) == 96, "the A2L's layout");
+static_assert(offsetof(Signals, speed) == 100, "the A2L's layout");
+static_assert(offsetof(Signals, y_lqr) == 104, "the A2L's layout");
+static_assert(offsetof(Signals, y) == 108, "the A2L's layout");
+static_assert(offsetof(Signals, stop) == 112, "the A2L's layout");
+static_assert(offsetof(Signals, robot_state) == 113, "the A2L's layout");
+static_assert(offsetof(Signals, standby_off) == 114, "the A2L's layout");
+static_assert(offsetof(Signals, left_in1) == 115, "the A2L's layout");
+static_assert(offsetof(Signals, left_in2) == 116, "the A2L's layout");
+static_assert(offsetof(Signals, duty_percent) == 120, "the A2L's layout");
+static_assert(offsetof(Signals, speed_left_captured) == 124, "the A2L's layout");
+static_assert(offsetof(Signals, travelled_left) == 128, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_left) == 132, "the A2L's layout");
+static_assert(offsetof(Signals, speed_right_captured) == 136, "the A2L's layout");
+static_assert(offsetof(Signals, travelled_right) == 140, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_right) == 144, "the A2L's layout");
+static_assert(offsetof(Signals, echo_captured) == 148, "the A2L's layout");
+static_assert(offsetof(Signals, distance) == 152, "the A2L's layout");
+static_assert(offsetof(Signals, adc_samples_received) == 156, "the A2L's layout");
+static_assert(offsetof(Signals, battery_voltage) == 356, "the A2L's layout");
+static_assert(offsetof(Signals, gains_in_use) == 360, "the A2L's layout");
+static_assert(offsetof(Signals, in_effect) == 372, "the A2L's layout");
+static_assert(offsetof(Signals, messages_received) == 376, "the A2L's layout");
+static_assert(offsetof(Signals, gains_received) == 380, "the A2L's layout");
+static_assert(offsetof(Signals, lqr_received) == 392, "the A2L's layout");
+static_assert(offsetof(Signals, linux_gains) == 396, "the A2L's layout");
+static_assert(sizeof(Signals) == 408);
 
 Parameters parameters{
     .P = 0.0196F,
@@ -164,6 +173,9 @@ void initialize() {
   state.filter_kalman.x[1] = 0.0F;
   state.filter_kalman.p[0] = 1.0F;
   state.filter_kalman.p[3] = 1.0F;
+  for (std::size_t i = 0; i < 4; ++i) state.tuned_before[i].state = 0.0F;
+  state.messages_before.state = std::uint32_t{0};
+  state.source_before.state = false;
   state.controller = {0.0F, 0.0F};
   state.velocity.filter = 0.0F;
   state.set_duty_latest.reset(0.0F);
@@ -182,8 +194,12 @@ void initialize() {
   state.samples_to_step.reset({std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}, std::uint16_t{0}});
   state.theta_to_ipc.reset(0.0F);
   state.distance_to_ipc.reset(0.0F);
+  state.gains_to_ipc.reset({0.0F, 0.0F, 0.0F});
+  state.in_effect_to_ipc.reset({std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}});
+  state.receive_count.count = std::uint32_t{1};
   state.gains_to_step.reset({0.0F, 0.0F, 0.0F});
-  state.sent_to_step.reset(false);
+  state.lqr_to_step.reset(false);
+  state.messages_to_step.reset(std::uint32_t{0});
   // device_reset/bytes (Constant)
   for (std::size_t i = 0; i < 2; ++i) signals.device_reset_bytes[i] = device_reset_bytes_value[i];
   // path_reset/bytes (Constant)
@@ -266,6 +282,45 @@ void step_rate_1() {
   signals.theta_rate = signals.estimate[1];
   // compare (Sum)
   signals.error = duet::blocks::subtract(p.target, signals.theta);
+  // lqr_tuned_number (Convert)
+  float lqr_number{};
+  lqr_number = duet::blocks::convert<float>(p.use_lqr);
+  // tuned (Mux)
+  float tuned_settings[4]{};
+  tuned_settings[0] = p.P;
+  tuned_settings[1] = p.I;
+  tuned_settings[2] = p.D;
+  tuned_settings[3] = lqr_number;
+  // tuned_before (UnitDelay)
+  float tuned_settings_before[4]{};
+  for (std::size_t i = 0; i < 4; ++i) tuned_settings_before[i] = state.tuned_before[i].output();
+  // tuned_change (Sum)
+  float tuned_change[4]{};
+  for (std::size_t i = 0; i < 4; ++i) tuned_change[i] = duet::blocks::subtract(tuned_settings[i], tuned_settings_before[i]);
+  // tuned_moved (Compare)
+  bool tuned_moved[4]{};
+  for (std::size_t i = 0; i < 4; ++i) tuned_moved[i] = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, tuned_change[i], 0.0F);
+  // moved (Demux)
+  bool p_moved{};
+  bool i_moved{};
+  bool d_moved{};
+  bool lqr_moved{};
+  p_moved = tuned_moved[0];
+  i_moved = tuned_moved[1];
+  d_moved = tuned_moved[2];
+  lqr_moved = tuned_moved[3];
+  // calibrated (Logic)
+  bool calibration_written{};
+  calibration_written = duet::blocks::logic<duet::blocks::LogicOperator::logical_or>(duet::blocks::convert<bool>(p_moved), duet::blocks::convert<bool>(i_moved), duet::blocks::convert<bool>(d_moved), duet::blocks::convert<bool>(lqr_moved));
+  // messages_before (UnitDelay)
+  std::uint32_t linux_messages_before{};
+  linux_messages_before = state.messages_before.output();
+  // source_before (UnitDelay)
+  bool gains_from_before{};
+  gains_from_before = state.source_before.output();
+  // unless_calibrated (Switch)
+  bool source_unless_linux{};
+  source_unless_linux = duet::blocks::select(duet::blocks::convert<bool>(calibration_written), false, gains_from_before);
   // to_radians (Gain)
   float theta_rad{};
   theta_rad = duet::blocks::gain(signals.theta, 0.017453292F);
@@ -283,6 +338,11 @@ void step_rate_1() {
   initialising = !duet::blocks::convert<bool>(signals.sensor_ready);
   // safety_stop (Logic)
   signals.stop = duet::blocks::logic<duet::blocks::LogicOperator::logical_or>(duet::blocks::convert<bool>(fallen), duet::blocks::convert<bool>(initialising));
+  // after_start (Switch)
+  std::uint8_t state_running{};
+  state_running = duet::blocks::select(duet::blocks::convert<bool>(fallen), std::uint8_t{2}, std::uint8_t{1});
+  // robot_state (Switch)
+  signals.robot_state = duet::blocks::select(duet::blocks::convert<bool>(initialising), std::uint8_t{0}, state_running);
   // standby (Not)
   signals.standby_off = !duet::blocks::convert<bool>(signals.stop);
   // stby_pin (GpioOut)
@@ -359,22 +419,33 @@ void step_rate_1() {
   p_linux = signals.linux_gains[0];
   i_linux = signals.linux_gains[1];
   d_linux = signals.linux_gains[2];
-  // sent_to_step (RateTransition)
-  signals.gains_from_linux = state.sent_to_step.read();
+  // lqr_to_step (RateTransition)
+  bool lqr_linux{};
+  lqr_linux = state.lqr_to_step.read();
+  // messages_to_step (RateTransition)
+  std::uint32_t linux_messages{};
+  linux_messages = state.messages_to_step.read();
+  // message_count_change (Sum)
+  std::uint32_t message_count_change{};
+  message_count_change = duet::blocks::subtract(linux_messages, linux_messages_before);
+  // new_message (Compare)
+  bool linux_sent{};
+  linux_sent = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, message_count_change, std::uint32_t{0});
+  // source (Switch)
+  signals.gains_from = duet::blocks::select(duet::blocks::convert<bool>(linux_sent), true, source_unless_linux);
   // p_gain (Switch)
-  float p_gain{};
-  p_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), p_linux, p.P);
+  signals.p_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from), p_linux, p.P);
   // i_gain (Switch)
-  float i_gain{};
-  i_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), i_linux, p.I);
+  signals.i_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from), i_linux, p.I);
   // d_gain (Switch)
-  float d_gain{};
-  d_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), d_linux, p.D);
+  signals.d_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from), d_linux, p.D);
+  // lqr_in_use (Switch)
+  signals.controller = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from), lqr_linux, p.use_lqr);
   // controller (DiscretePid)
-  signals.y_pid = state.controller.output(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F});
+  signals.y_pid = state.controller.output(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F});
   // choose (Switch)
   float y_chosen{};
-  y_chosen = duet::blocks::select(duet::blocks::convert<bool>(p.use_lqr), signals.y_lqr, signals.y_pid);
+  y_chosen = duet::blocks::select(duet::blocks::convert<bool>(signals.controller), signals.y_lqr, signals.y_pid);
   // duty_limit (Saturation)
   signals.y = duet::blocks::saturate(y_chosen, -1.0F, 1.0F);
   // direction (Compare)
@@ -400,17 +471,36 @@ void step_rate_1() {
   duty_size = duet::blocks::absolute(signals.y);
   // to_percent (Gain)
   signals.duty_percent = duet::blocks::gain(duty_size, 100.0F);
+  // gains_in_use (Mux)
+  signals.gains_in_use[0] = signals.p_gain;
+  signals.gains_in_use[1] = signals.i_gain;
+  signals.gains_in_use[2] = signals.d_gain;
+  // controller_byte (Convert)
+  std::uint8_t controller_byte{};
+  controller_byte = duet::blocks::convert<std::uint8_t>(signals.controller);
+  // source_byte (Convert)
+  std::uint8_t source_byte{};
+  source_byte = duet::blocks::convert<std::uint8_t>(signals.gains_from);
+  // in_effect (Mux)
+  signals.in_effect[0] = controller_byte;
+  signals.in_effect[1] = source_byte;
+  signals.in_effect[2] = signals.robot_state;
   state.init_done.update();
   if (duet::blocks::convert<bool>(signals.sensor_ready)) {
     state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q);
   }
-  state.controller.update_clamped(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F}, 0.001F);
+  for (std::size_t i = 0; i < 4; ++i) state.tuned_before[i].update(tuned_settings[i]);
+  state.messages_before.update(linux_messages);
+  state.source_before.update(signals.gains_from);
+  state.controller.update_clamped(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F}, 0.001F);
   state.velocity.update(signals.position, 1.0F, 20.0F, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();
   state.adc_wave.update();
   state.theta_to_ipc.write(signals.theta, release_0_every_10);
   state.distance_to_ipc.write(signals.distance, release_0_every_10);
+  state.gains_to_ipc.write(std::array<float, 3>{signals.gains_in_use[0], signals.gains_in_use[1], signals.gains_in_use[2]}, release_0_every_10);
+  state.in_effect_to_ipc.write(std::array<std::uint8_t, 3>{signals.in_effect[0], signals.in_effect[1], signals.in_effect[2]}, release_0_every_10);
   state.release_0_every_10 = release_0_every_10 ? 9U : state.release_0_every_10 - 1U;
 }
 
@@ -581,14 +671,32 @@ void step_rate_10() {
   // distance_to_ipc (RateTransition)
   float distance_slow{};
   distance_slow = state.distance_to_ipc.read();
+  // gains_to_ipc (RateTransition)
+  float gains_slow[3]{};
+  {
+    const auto& value = state.gains_to_ipc.read();
+    for (std::size_t i = 0; i < 3; ++i) gains_slow[i] = value[i];
+  }
+  // in_effect_to_ipc (RateTransition)
+  std::uint8_t in_effect_slow[3]{};
+  {
+    const auto& value = state.in_effect_to_ipc.read();
+    for (std::size_t i = 0; i < 3; ++i) in_effect_slow[i] = value[i];
+  }
   // pack (BytePack)
-  std::uint8_t message[12]{};
+  std::uint8_t message[27]{};
   duet::blocks::pack(theta_slow, duet::blocks::Endian::little, &message[0]);
   duet::blocks::pack(signals.battery_voltage, duet::blocks::Endian::little, &message[4]);
   duet::blocks::pack(distance_slow, duet::blocks::Endian::little, &message[8]);
+  duet::blocks::pack(gains_slow[0], duet::blocks::Endian::little, &message[12]);
+  duet::blocks::pack(gains_slow[1], duet::blocks::Endian::little, &message[16]);
+  duet::blocks::pack(gains_slow[2], duet::blocks::Endian::little, &message[20]);
+  duet::blocks::pack(in_effect_slow[0], duet::blocks::Endian::little, &message[24]);
+  duet::blocks::pack(in_effect_slow[1], duet::blocks::Endian::little, &message[25]);
+  duet::blocks::pack(in_effect_slow[2], duet::blocks::Endian::little, &message[26]);
   // send (IpcSend)
   {
-    const double written[] = {duet::blocks::convert<double>(message[0]), duet::blocks::convert<double>(message[1]), duet::blocks::convert<double>(message[2]), duet::blocks::convert<double>(message[3]), duet::blocks::convert<double>(message[4]), duet::blocks::convert<double>(message[5]), duet::blocks::convert<double>(message[6]), duet::blocks::convert<double>(message[7]), duet::blocks::convert<double>(message[8]), duet::blocks::convert<double>(message[9]), duet::blocks::convert<double>(message[10]), duet::blocks::convert<double>(message[11])};
+    const double written[] = {duet::blocks::convert<double>(message[0]), duet::blocks::convert<double>(message[1]), duet::blocks::convert<double>(message[2]), duet::blocks::convert<double>(message[3]), duet::blocks::convert<double>(message[4]), duet::blocks::convert<double>(message[5]), duet::blocks::convert<double>(message[6]), duet::blocks::convert<double>(message[7]), duet::blocks::convert<double>(message[8]), duet::blocks::convert<double>(message[9]), duet::blocks::convert<double>(message[10]), duet::blocks::convert<double>(message[11]), duet::blocks::convert<double>(message[12]), duet::blocks::convert<double>(message[13]), duet::blocks::convert<double>(message[14]), duet::blocks::convert<double>(message[15]), duet::blocks::convert<double>(message[16]), duet::blocks::convert<double>(message[17]), duet::blocks::convert<double>(message[18]), duet::blocks::convert<double>(message[19]), duet::blocks::convert<double>(message[20]), duet::blocks::convert<double>(message[21]), duet::blocks::convert<double>(message[22]), duet::blocks::convert<double>(message[23]), duet::blocks::convert<double>(message[24]), duet::blocks::convert<double>(message[25]), duet::blocks::convert<double>(message[26])};
     duet::hardware::write("ipc:app", written);
   }
   state.init_clock.update(std::uint32_t{4294967295});
@@ -858,9 +966,9 @@ void task_DMA2_Stream4() {
 
 void task_IPCC_RX1() {
   // receive/message (IpcReceive)
-  std::uint8_t receive_message[12]{};
+  std::uint8_t receive_message[13]{};
   {
-    double values[12]{};
+    double values[13]{};
     duet::hardware::read("ipc:app", values);
     receive_message[0] = duet::blocks::convert<std::uint8_t>(values[0]);
     receive_message[1] = duet::blocks::convert<std::uint8_t>(values[1]);
@@ -874,13 +982,23 @@ void task_IPCC_RX1() {
     receive_message[9] = duet::blocks::convert<std::uint8_t>(values[9]);
     receive_message[10] = duet::blocks::convert<std::uint8_t>(values[10]);
     receive_message[11] = duet::blocks::convert<std::uint8_t>(values[11]);
+    receive_message[12] = duet::blocks::convert<std::uint8_t>(values[12]);
   }
+  // receive/count (Counter)
+  signals.messages_received = state.receive_count.output();
   // receive/unpack (ByteUnpack)
   signals.gains_received[0] = duet::blocks::unpack<float>(&receive_message[0], duet::blocks::Endian::little);
   signals.gains_received[1] = duet::blocks::unpack<float>(&receive_message[4], duet::blocks::Endian::little);
   signals.gains_received[2] = duet::blocks::unpack<float>(&receive_message[8], duet::blocks::Endian::little);
+  // receive/controller_choice (ByteUnpack)
+  std::uint8_t receive_lqr_byte{};
+  receive_lqr_byte = duet::blocks::unpack<std::uint8_t>(&receive_message[12], duet::blocks::Endian::little);
+  // receive/is_lqr (Compare)
+  signals.lqr_received = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, receive_lqr_byte, std::uint8_t{0});
+  state.receive_count.update(std::uint32_t{4294967295});
   state.gains_to_step.write(std::array<float, 3>{signals.gains_received[0], signals.gains_received[1], signals.gains_received[2]});
-  state.sent_to_step.write(true);
+  state.lqr_to_step.write(signals.lqr_received);
+  state.messages_to_step.write(signals.messages_received);
 }
 
 // The task table fits the executive (duet/rt/task_table.hpp).

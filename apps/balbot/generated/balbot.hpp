@@ -80,12 +80,18 @@ struct Signals {
   float theta;
   float theta_rate;
   float error;
+  bool gains_from;
+  float p_gain;
+  float i_gain;
+  float d_gain;
+  bool controller;
   float y_pid;
   float position;
   float speed;
   float y_lqr;
   float y;
   bool stop;
+  std::uint8_t robot_state;
   bool standby_off;
   bool left_in1;
   bool left_in2;
@@ -100,9 +106,12 @@ struct Signals {
   float distance;
   std::uint16_t adc_samples_received[100];
   float battery_voltage;
+  float gains_in_use[3];
+  std::uint8_t in_effect[3];
+  std::uint32_t messages_received;
   float gains_received[3];
+  bool lqr_received;
   float linux_gains[3];
-  bool gains_from_linux;
 };
 
 namespace code::echo_every_second {
@@ -140,6 +149,9 @@ struct State {
   duet::blocks::Counter<std::uint32_t> transmit_complete_requests;
   duet::rt::AsyncTransfer<std::array<std::uint8_t, 15>> mpu_bytes_to_step;
   duet::blocks::KalmanFilter<float, 2, 2, 1> filter_kalman;
+  duet::blocks::UnitDelay<float> tuned_before[4];
+  duet::blocks::UnitDelay<std::uint32_t> messages_before;
+  duet::blocks::UnitDelay<bool> source_before;
   duet::blocks::DiscretePid<float> controller;
   duet::blocks::FilteredDerivative<float> velocity;
   duet::rt::AsyncTransfer<float> set_duty_latest;
@@ -157,8 +169,12 @@ struct State {
   duet::rt::AsyncTransfer<std::array<std::uint16_t, 100>> samples_to_step;
   duet::rt::FastToSlow<float> theta_to_ipc;
   duet::rt::FastToSlow<float> distance_to_ipc;
+  duet::rt::FastToSlow<std::array<float, 3>> gains_to_ipc;
+  duet::rt::FastToSlow<std::array<std::uint8_t, 3>> in_effect_to_ipc;
+  duet::blocks::Counter<std::uint32_t> receive_count;
   duet::rt::AsyncTransfer<std::array<float, 3>> gains_to_step;
-  duet::rt::AsyncTransfer<bool> sent_to_step;
+  duet::rt::AsyncTransfer<bool> lqr_to_step;
+  duet::rt::AsyncTransfer<std::uint32_t> messages_to_step;
 };
 
 extern Parameters parameters;

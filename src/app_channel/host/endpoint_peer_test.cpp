@@ -307,15 +307,15 @@ TEST(AppChannelLabels, ThePcReadsItemsWithAndWithoutNames) {
     peer.receive(bytes);
   };
   const auto item = [](std::uint8_t index, std::vector<std::uint8_t> tail) {
-    std::vector<std::uint8_t> packet{0x02, 0, index, 1};  // item, telemetry, index, uint8
-    for (int k = 0; k < 8; ++k) packet.push_back(0);      // minimum 0.0
+    std::vector<std::uint8_t> packet{0x02, 0, index, 1};          // item, telemetry, index, uint8
+    for (int k = 0; k < 8; ++k) packet.push_back(0);              // minimum 0.0
     packet.insert(packet.end(), {0, 0, 0, 0, 0, 0, 0xF0, 0x3F});  // maximum 1.0
     packet.insert(packet.end(), tail.begin(), tail.end());
     return packet;
   };
-  send({0x01, 1, 1, 'r', 0x10, 0x27, 0, 0, 2, 0});                  // hello: version 1, "r", 10000 us, 2 and 0 items
+  send({0x01, 1, 1, 'r', 0x10, 0x27, 0, 0, 2, 0});                    // hello: version 1, "r", 10000 us, 2 and 0 items
   send(item(0, {2, 'o', 'n', 0, 2, 2, 'n', 'o', 3, 'y', 'e', 's'}));  // "on", no unit, names "no" and "yes"
-  send(item(1, {1, 'x', 1, 'V'}));                                  // "x" in V, no names
+  send(item(1, {1, 'x', 1, 'V'}));                                    // "x" in V, no names
   send({0x03});
   EXPECT_TRUE(problems.empty()) << problems.front();
   ASSERT_EQ(descriptions.size(), 1U);

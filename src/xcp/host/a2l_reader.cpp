@@ -447,7 +447,8 @@ class Reader {
       if (method != compu_methods_.end()) {
         variable.conversion = method->second.conversion;
         variable.unit = method->second.unit;
-        if (!method->second.verbal_table.empty()) variable.labels = verbal_table(method->second.verbal_table, *conversion);
+        if (!method->second.verbal_table.empty())
+          variable.labels = verbal_table(method->second.verbal_table, *conversion);
       } else if (conversion->value != "NO_COMPU_METHOD") {
         fail(conversion->place, variable.name + ": no COMPU_METHOD named '" + conversion->value + "'");
       }

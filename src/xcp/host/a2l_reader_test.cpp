@@ -100,13 +100,12 @@ TEST_F(EngineA2l, ReadsTheXcpInterface) {
 
 TEST_F(EngineA2l, SaysWhatItLeavesOut) {
   const std::string file = engine_file();
-  EXPECT_EQ(a2l.warnings,
-            (std::vector<std::string>{
-                file + ":32:18: big-endian values (MSB_FIRST) are read as little-endian",
-                file + ":69:5: COMPU_METHOD pedal: TAB_INTP conversions are not applied (raw values)",
-                file + ":86:18: engine_speed: big-endian values (MSB_FIRST) are read as little-endian",
-                file + ":100:16: flags: BIT_MASK 0x0F is not applied (the whole value is read)",
-            }));
+  EXPECT_EQ(a2l.warnings, (std::vector<std::string>{
+                              file + ":32:18: big-endian values (MSB_FIRST) are read as little-endian",
+                              file + ":69:5: COMPU_METHOD pedal: TAB_INTP conversions are not applied (raw values)",
+                              file + ":86:18: engine_speed: big-endian values (MSB_FIRST) are read as little-endian",
+                              file + ":100:16: flags: BIT_MASK 0x0F is not applied (the whole value is read)",
+                          }));
 }
 
 std::string engine_with(const std::string& from, const std::string& to) {

@@ -14,7 +14,16 @@ A2lDescription robot() {
       {"theta", "tilt angle", DataType::float32, 0, 0x1000, 1, "deg", -90, 90, {}},
       {"battery", "battery voltage, raw ADC", DataType::uint16, 0, 0x1004, 1, "V", 0, 13.2, {0.0032, -0.1}},
       {"wheel_speeds", "left and right", DataType::int16, 0, 0x1008, 2, "rpm", -500, 500, {}},
-      {"state", "what the robot does", DataType::uint8, 0, 0x100C, 1, "", 0, 2, {},
+      {"state",
+       "what the robot does",
+       DataType::uint8,
+       0,
+       0x100C,
+       1,
+       "",
+       0,
+       2,
+       {},
        {{0, "initialising"}, {1, "balancing"}, {2, "stopped"}}},
   };
   a2l.characteristics = {

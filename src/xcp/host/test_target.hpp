@@ -125,10 +125,10 @@ struct TestTarget {
     description.measurements = {{"counter", "step number", DataType::uint32, 0, 0x1000, 1, "", 0, 4294967295.0, {}},
                                 {"twice", "twice the step", DataType::uint16, 0, 0x1004, 1, "", 0, 65535, {}},
                                 {"slow", "every second step", DataType::uint8, 0, 0x1006, 1, "", 0, 255, {}}};
-    description.characteristics = {{"gain", "a gain", DataType::float32, 0, 0x2000, 1, "", 0, 100, {}},
-                                   {"scaled", "a scaled word", DataType::uint16, 0, 0x2004, 1, "V", 0, 10, {0.01, 0}},
-                                   {"flags", "two bytes", DataType::uint8, 0, 0x2006, 2, "", 0, 255, {},
-                                    {{0, "clear"}, {1, "set"}}}};
+    description.characteristics = {
+        {"gain", "a gain", DataType::float32, 0, 0x2000, 1, "", 0, 100, {}},
+        {"scaled", "a scaled word", DataType::uint16, 0, 0x2004, 1, "V", 0, 10, {0.01, 0}},
+        {"flags", "two bytes", DataType::uint8, 0, 0x2006, 2, "", 0, 255, {}, {{0, "clear"}, {1, "set"}}}};
     description.events = {{"1 ms", 0, 1, 6, 0}, {"10 ms", 1, 10, 6, 0}};
     description.max_cto = 32;
     description.max_dto = 64;

@@ -7,13 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include <utility>
-
 #include <cstdint>
 #include <functional>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "duet/dashboard/recorder.hpp"
