@@ -9,6 +9,7 @@ import { createTuningPage } from './tuning_page.js';
 import { createScopePage } from './scope_page.js';
 import { createRecorderPage } from './recorder_page.js';
 import { createStatusPage } from './status_page.js';
+import { createValuesPanel } from './values_panel.js';
 import { setUpTabs } from './tabs.js';
 
 const hub = new EventHub();
@@ -26,6 +27,7 @@ const connection = new Connection(websocketUrl(location), {
 const duet = installTestHooks(connection);
 
 connectSignalFeed(hub, duet.stats);
+createValuesPanel({ hub, node: document.getElementById('tuning-now') });
 hub.on('channel', (channel) => indicator.channel(channel.open !== false));
 hub.on('description', () => indicator.channel(true));
 

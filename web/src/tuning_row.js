@@ -1,6 +1,7 @@
 import { element } from './dom.js';
 import { formatNumber } from './number_format.js';
 import { asStored, digitsFor, hasUsableLimits, isIntegerType, problemWith, sameValue, stepFor } from './parameter_rules.js';
+import { nameOf } from './value_names.js';
 
 // One parameter on the Tuning page: the value being edited (slider and number field in step),
 // the target's value, Write, and Undo through the values this page replaced.
@@ -79,12 +80,14 @@ export class TuningRow {
     this.edited = value;
     if (typeof value !== 'number') return;
     if (this.slider) this.slider.value = String(value);
+    if (this.choice) this.choice.value = String(value);
     // Show what the target will hold, to the digits that matter (no float32 noise).
     this.numberField.value = String(Number(asStored(this.parameter, value).toPrecision(digitsFor(this.parameter))));
   }
 
   #refresh() {
-    this.targetValue.textContent = this.target === undefined ? '—' : formatNumber(this.target, digitsFor(this.parameter));
+    this.targetValue.textContent =
+      this.target === undefined ? '—' : (nameOf(this.parameter, this.target) ?? formatNumber(this.target, digitsFor(this.parameter)));
     if (this.target !== undefined) this.targetValue.dataset.value = String(this.target);
     this.writeButton.disabled = !this.changed;
     this.undoButton.disabled = this.history.length === 0;
@@ -113,10 +116,11 @@ export class TuningRow {
   }
 
   #fromField(field) {
-    const value = field.valueAsNumber;
+    const value = field === this.choice ? Number(field.value) : field.valueAsNumber;
     this.edited = Number.isNaN(value) ? undefined : value;
     if (field !== this.numberField && this.edited !== undefined) this.#setEdited(this.edited);
     if (field !== this.slider && this.slider && this.edited !== undefined) this.slider.value = String(this.edited);
+    if (field === this.choice && this.edited !== undefined) this.numberField.value = String(this.edited);
     const problem = this.edited === undefined ? 'not a number' : problemWith(this.parameter, this.edited);
     this.#say(problem, problem ? 'bad' : 'muted');
     this.#refresh();
@@ -126,7 +130,16 @@ export class TuningRow {
     const { name, unit, type, min, max } = this.parameter;
     const step = stepFor(this.parameter);
     const usable = hasUsableLimits(this.parameter);
-    this.slider = usable
+    // A parameter whose values have names (a choice: the controller) is chosen by name.
+    const labels = this.parameter.labels ?? [];
+    this.choice = labels.length
+      ? element(
+          'select',
+          { 'data-parameter': name, 'data-choice': name, 'aria-label': `${name} choice`, onchange: () => this.#fromField(this.choice) },
+          labels.map((label) => element('option', { value: String(label.value) }, label.text)),
+        )
+      : null;
+    this.slider = usable && !this.choice
       ? element('input', { type: 'range', min, max, step, 'data-parameter': name, 'aria-label': `${name} slider`, oninput: () => this.#fromField(this.slider) })
       : null;
     this.numberField = element('input', {
@@ -137,6 +150,7 @@ export class TuningRow {
       inputmode: isIntegerType(type) ? 'numeric' : 'decimal',
       'data-parameter': name,
       'aria-label': `${name} value`,
+      hidden: this.choice !== null,
       oninput: () => this.#fromField(this.numberField),
       onkeydown: (event) => {
         if (event.key === 'Enter') this.writeEdited();
@@ -151,7 +165,8 @@ export class TuningRow {
       { class: 'parameter', 'data-row': name },
       element('div', { class: 'parameter-head' }, element('span', { class: 'parameter-name' }, name), unit ? element('span', { class: 'unit' }, unit) : null, element('span', { class: 'type' }, type), element('span', { class: 'target' }, 'target ', this.targetValue)),
       this.slider,
-      element('div', { class: 'limits' }, element('span', {}, `min ${formatNumber(min)}`), element('span', {}, `max ${formatNumber(max)}`)),
+      this.choice,
+      this.choice ? null : element('div', { class: 'limits' }, element('span', {}, `min ${formatNumber(min)}`), element('span', {}, `max ${formatNumber(max)}`)),
       element('div', { class: 'parameter-edit' }, this.numberField, this.writeButton, this.undoButton),
       this.statusLine,
     );

@@ -53,7 +53,7 @@ test('add a block after a block-style last item and into a nested subsystem, kee
   const top = edit(balbot, addBlock(balbot, '', { name: 'abs_1', type: 'Abs', parameters: [] }));
   assert.deepEqual(top.added, ['  - {name: abs_1, type: Abs}']);
   assert.equal(top.model.blocks.at(-1).name, 'abs_1');
-  assert.equal(top.model.blocks.at(-2).name, 'sent_to_step');
+  assert.equal(top.model.blocks.at(-2).name, 'messages_to_step');
 
   const inner = edit(balbot, addBlock(balbot, 'hall_left', { name: 'gain_1', type: 'Gain', parameters: [['k', '2']] }));
   assert.deepEqual(inner.removed, []);
@@ -186,9 +186,9 @@ test('delete a flow-style block (its line), a block-style block (all its lines) 
   const nested = edit(balbot, deleteBlock(balbot, 'filter/kalman'));
   assert.deepEqual(findBlock(nested.model, 'filter').blocks, []);
   assert.deepEqual(nested.added, ['    blocks: []']);
-  const last = edit(balbot, deleteBlock(balbot, 'sent_to_step'));
-  assert.equal(last.model.blocks.at(-1).name, 'gains_to_step');
-  assert.ok(last.after.endsWith('outputs: {y: linux_gains}}\n'));
+  const last = edit(balbot, deleteBlock(balbot, 'messages_to_step'));
+  assert.equal(last.model.blocks.at(-1).name, 'lqr_to_step');
+  assert.ok(last.after.endsWith('outputs: {y: lqr_linux}}\n'));
 });
 
 test('delete from a flow list takes the comma with it', () => {

@@ -24,7 +24,14 @@ export const description = {
     { name: 'P', unit: '', type: 'float32', min: 0, max: 1 },
     { name: 'I', unit: '', type: 'float32', min: 0, max: 1 },
     { name: 'D', unit: '', type: 'float32', min: 0, max: 1 },
-    { name: 'mode', unit: '', type: 'uint8', min: 0, max: 3 },
+    {
+      name: 'mode',
+      unit: '',
+      type: 'uint8',
+      min: 0,
+      max: 3,
+      labels: ['off', 'slow', 'normal', 'fast'].map((text, value) => ({ value, text })),
+    },
   ],
 };
 
