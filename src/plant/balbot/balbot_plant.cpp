@@ -194,6 +194,30 @@ void BalbotPlant::observe(std::span<double> values) const {
   }
 }
 
+std::vector<DisturbanceKind> BalbotPlant::disturbances() const {
+  return {
+      {"push",
+       "a horizontal force at the body's centre of mass, + forward",
+       {{"force_n", "N", -50, 50, 5}, {"duration_s", "s", 0.001, 1, 0.05}}},
+      {"duty_pulse",
+       "added to both motors' duty, as the thesis' disturbance pulse z1",
+       {{"duty", "", -1, 1, 1}, {"duration_s", "s", 0.001, 1, 0.001}}},
+      {"restart", "picked up, put back at the scenario's tilt within 1 s, held and let go as the scenario does", {}}};
+}
+
+void BalbotPlant::disturb(const Disturbance& disturbance, double time_s) {
+  const auto argument = [&disturbance](std::size_t index) {
+    return index < disturbance.arguments.size() ? disturbance.arguments[index] : 0.0;
+  };
+  if (disturbance.name == "push") {
+    simulation_->push({.time_s = time_s, .force_n = argument(0), .duration_s = argument(1)});
+  } else if (disturbance.name == "duty_pulse") {
+    simulation_->disturb_duty({.time_s = time_s, .duty = argument(0), .duration_s = argument(1)});
+  } else if (disturbance.name == "restart") {
+    simulation_->restart(time_s);
+  }
+}
+
 std::unique_ptr<BalbotPlant> make_balbot_plant(std::uint64_t seed) {
   BalbotScenario scenario;
   scenario.seed = seed;

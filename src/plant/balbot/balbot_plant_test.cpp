@@ -13,76 +13,8 @@
 namespace duet::plant {
 namespace {
 
+using testing::balance;
 using testing::BalbotBench;
-using testing::word;
-
-constexpr double degrees_per_radian = 180 / std::numbers::pi;
-
-// A controller as the model would run it: EXTI8 requests the burst read, DMA2_Stream2 filters the tilt
-// (complementary filter of atan(a_x / a_z) and -g_y / 16.4), the 1 ms periodic task runs a PID on it and sets the
-// driver's pins as the thesis' motor logic does. Motors driven by voltage turn the wheels at a speed proportional to
-// the duty, so a PD on the tilt alone cannot balance; the integral term (the thesis' tunable I) makes it.
-class BalancingController {
- public:
-  explicit BalancingController(BalbotBench& bench) : bench_(bench) {
-    bench.on_interrupt = [this](std::string_view interrupt) {
-      if (interrupt == "EXTI8") {
-        std::vector<double> request(15, 0.0);
-        request[0] = 0x3B | 0x80;
-        bench_.spi(request);
-      }
-      if (interrupt == "DMA2_Stream2") {
-        const std::vector<double> bytes = bench_.get("spi:SPI5", 15);
-        const double accel_tilt = std::atan(word(bytes, 1) / word(bytes, 5)) * degrees_per_radian;
-        rate_ = -word(bytes, 11) / 16.4;
-        theta_ = samples_++ == 0 ? accel_tilt : 0.998 * (theta_ + rate_ * 1e-3) + 0.002 * accel_tilt;
-      }
-    };
-  }
-
-  // The periodic task.
-  void step() {
-    if (samples_ == 0) return;
-    integral_ += theta_ * 1e-3;
-    const double y = -(0.1 * theta_ + 3.0 * integral_ + 0.005 * rate_);
-    const bool stop = std::abs(theta_) > 60;
-    bench_.set("gpio:PA12", stop ? 0 : 1);
-    bench_.set("gpio:PE9", y >= 0 ? 1 : 0);  // left: forward is clockwise
-    bench_.set("gpio:PD1", y >= 0 ? 0 : 1);
-    bench_.set("gpio:PE10", y >= 0 ? 0 : 1);  // right: outputs swapped (mirrored motor)
-    bench_.set("gpio:PD14", y >= 0 ? 1 : 0);
-    const double duty = std::min(std::abs(y), 1.0) * 100;
-    bench_.set("pwm:TIM1/4", duty);
-    bench_.set("pwm:TIM1/3", duty);
-  }
-
-  [[nodiscard]] double theta() const { return theta_; }
-
- private:
-  BalbotBench& bench_;
-  double theta_ = 0;
-  double rate_ = 0;
-  double integral_ = 0;
-  int samples_ = 0;
-};
-
-// The MPU6500 set up as fast as it allows (reset, 100 ms, then a write per tick), then the controller.
-std::vector<std::array<double, BalbotTruth::count>> balance(const BalbotScenario& scenario, double seconds) {
-  BalbotBench bench{scenario};
-  bench.record = false;
-  BalancingController controller{bench};
-  std::vector<std::array<double, BalbotTruth::count>> truth;
-  const std::vector<std::vector<double>> writes{{0x6B, 0x01}, {0x6A, 0x10}, {0x19, 0x00}, {0x1A, 0x01},
-                                                {0x1B, 0x18}, {0x1C, 0x08}, {0x38, 0x01}};
-  bench.spi({0x6B, 0x80});
-  bench.run_until(seconds, [&](double now) {
-    const auto tick = static_cast<std::size_t>(std::llround(now * 1000));
-    if (tick >= 101 && tick < 101 + writes.size()) bench.spi(writes[tick - 101]);
-    controller.step();
-    truth.push_back(bench.plant.truth().values());
-  });
-  return truth;
-}
 
 double theta_deg(const std::array<double, BalbotTruth::count>& values) { return values[1]; }
 

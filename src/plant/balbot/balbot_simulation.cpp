@@ -16,6 +16,9 @@ using balbot::never;
 
 constexpr Nanoseconds longest_step = 1'000'000;  // integration steps of at most 1 ms
 constexpr Nanoseconds pwm_period = 500'000;      // TIM1, thesis task 4
+// A restart turns the body back to the scenario's tilt in a second: as a hand does, and slowly enough for the
+// firmware's Kalman filter, which follows the tilt through the gyroscope, to follow it (README.md, "Restart").
+constexpr Nanoseconds carry_time = 1'000'000'000;
 constexpr double degrees_per_radian = 180 / std::numbers::pi;
 
 Nanoseconds nanoseconds(double seconds) { return std::llround(std::max(seconds, 0.0) * 1e9); }
@@ -49,29 +52,15 @@ BalbotSimulation::BalbotSimulation(const BalbotScenario& scenario, const BalbotP
       adc_noise_(scenario.seed ^ 0x9E3779B97F4A7C15ULL),  // apart, so that reading the battery leaves the IMU's noise
       committed_(initial_state(scenario, parameters)),
       current_(committed_),
+      scenario_(scenario),
+      initial_(committed_),
       next_pwm_period_(pwm_period),
       halls_{balbot::HallEncoder{+1, parameters.hall_edges_per_wheel_turn, 0.0},
              balbot::HallEncoder{-1, parameters.hall_edges_per_wheel_turn, 0.0}},
       mpu_(parameters, scenario.noise ? &imu_noise_ : nullptr),
       ultrasonic_(parameters),
       adc_(parameters, scenario.noise ? &adc_noise_ : nullptr) {
-  for (const BalbotPush& push : scenario.pushes) {
-    pushes_.push_back({nanoseconds(push.time_s), nanoseconds(push.time_s + push.duration_s), push.force_n});
-  }
-  for (const BalbotDutyDisturbance& pulse : scenario.duty_disturbances) {
-    disturbances_.push_back({nanoseconds(pulse.time_s), nanoseconds(pulse.time_s + pulse.duration_s), pulse.duty});
-  }
-  if (scenario.rig == BalbotRig::on_ground && scenario.release_time_s > 0) {
-    release_time_ = nanoseconds(scenario.release_time_s);
-    scenario_changes_.push_back(release_time_);
-  }
-  for (const std::vector<Pulse>* pulses : {&pushes_, &disturbances_}) {
-    for (const Pulse& pulse : *pulses) {
-      scenario_changes_.push_back(pulse.start);
-      scenario_changes_.push_back(pulse.end);
-    }
-  }
-  std::sort(scenario_changes_.begin(), scenario_changes_.end());
+  plan_scenario(0);
   for (const BalbotIpcMessage& message : scenario.ipc_messages) {
     const std::size_t size = std::min(message.bytes.size(), most_message_bytes);
     messages_.push_back({nanoseconds(message.time_s),
@@ -106,16 +95,13 @@ void BalbotSimulation::advance(Nanoseconds target, const RaiseInterrupt& raise) 
 
 void BalbotSimulation::ensure_segment(Nanoseconds target) {
   if (segment_valid_) return;
-  if (!derivative_valid_) {
-    committed_derivative_ = mechanics_.derivative(committed_, prepared_drive());
-    derivative_valid_ = true;
-  }
   // Segments end at the PWM timer's interrupt too: the firmware sets the duty there, and a drive that changes inside
   // a segment throws away the part integrated beyond it.
   segment_end_time_ = std::min({target, committed_time_ + longest_step, std::max(next_pwm_period_, committed_time_)});
+  if (carried()) segment_end_time_ = std::min(segment_end_time_, carry_end_);  // the hand lets go there
   if (segment_end_time_ > committed_time_) {
     const double h = seconds(segment_end_time_ - committed_time_);
-    segment_end_ = mechanics_.step(committed_, committed_derivative_, prepared_drive(), h);
+    segment_end_ = moved_to(segment_end_time_);
     segment_ = balbot::Segment{committed_, segment_end_, h, parameters_.wheel_radius_m};
   } else {
     segment_end_ = committed_;
@@ -141,6 +127,17 @@ void BalbotSimulation::commit_segment() {
   current_ = committed_;
   current_valid_ = true;
   segment_valid_ = false;
+}
+
+MechanicalState BalbotSimulation::moved_to(Nanoseconds time) {
+  if (carried()) {  // the hand's motion, a cubic of time: its pieces between segment ends are that cubic again
+    return carry_.at(static_cast<double>(time - carry_start_) / static_cast<double>(carry_end_ - carry_start_));
+  }
+  if (!derivative_valid_) {
+    committed_derivative_ = mechanics_.derivative(committed_, prepared_drive());
+    derivative_valid_ = true;
+  }
+  return mechanics_.step(committed_, committed_derivative_, prepared_drive(), seconds(time - committed_time_));
 }
 
 MechanicalState BalbotSimulation::state_at(Nanoseconds time) const {
@@ -181,7 +178,8 @@ BalbotSimulation::Next BalbotSimulation::next_event() {
   const auto consider = [&](Nanoseconds time, Source source) {
     if (time <= segment_end_time_ && time < best.time) best = {std::max(time, now_), source};
   };
-  // The order breaks ties: a scenario change acts before the interrupts of the same instant.
+  // The order breaks ties: a restart, then a scenario change act before the interrupts of the same instant.
+  consider(restart_at_, Source::restart);
   if (next_scenario_change_ < scenario_changes_.size()) {
     consider(scenario_changes_[next_scenario_change_], Source::scenario);
   }
@@ -202,6 +200,10 @@ void BalbotSimulation::raise(std::string_view interrupt) const {
 
 void BalbotSimulation::handle(const Next& next) {
   switch (next.source) {
+    case Source::restart:
+      restart_at_ = never;
+      pick_up_and_put_back();
+      return;
     case Source::scenario: apply_scenario(); return;
     case Source::pwm_period:
       next_pwm_period_ += pwm_period;
@@ -279,20 +281,98 @@ void BalbotSimulation::update_drive(bool left, bool right) {
   }
   const balbot::Drive next{left_output_.drive, right_output_.drive, push_force_, now_ < release_time_};
   if (same(next, drive_)) return;
-  if (segment_valid_) convert_until(now_, false);  // the segment ends here
+  end_segment_here();
+  drive_ = next;
+  drive_prepared_ = false;  // worked out when next needed: several inputs often change at one instant
+}
+
+void BalbotSimulation::end_segment_here() {
+  if (segment_valid_) convert_until(now_, false);
   for (balbot::HallEncoder& hall : halls_) hall.apply_before(now_);
   if (now_ > committed_time_) {
-    // The drive changes inside the segment: integrate exactly to this instant with the old drive, start again here.
-    if (!derivative_valid_) committed_derivative_ = mechanics_.derivative(committed_, prepared_drive());
-    committed_ = mechanics_.step(committed_, committed_derivative_, prepared_drive(), seconds(now_ - committed_time_));
+    // Something changes inside the segment: move exactly to this instant as before, start again here.
+    committed_ = moved_to(now_);
     committed_time_ = now_;
     current_ = committed_;
     current_valid_ = true;
   }
-  drive_ = next;
-  drive_prepared_ = false;  // worked out when next needed: several inputs often change at one instant
   derivative_valid_ = false;
   segment_valid_ = false;
+}
+
+// ---- Disturbances ----------------------------------------------------------------------------------------------
+
+void BalbotSimulation::plan_scenario(Nanoseconds origin) {
+  pushes_.clear();
+  disturbances_.clear();
+  scenario_changes_.clear();
+  next_scenario_change_ = 0;
+  release_time_ = 0;
+  if (rig_ == BalbotRig::on_ground) {
+    release_time_ = origin + nanoseconds(scenario_.release_time_s);
+    if (release_time_ > 0) scenario_changes_.push_back(release_time_);
+  }
+  for (const BalbotPush& push : scenario_.pushes) {
+    add_pulse(pushes_, origin, push.time_s, push.duration_s, push.force_n);
+  }
+  for (const BalbotDutyDisturbance& pulse : scenario_.duty_disturbances) {
+    add_pulse(disturbances_, origin, pulse.time_s, pulse.duration_s, pulse.duty);
+  }
+}
+
+void BalbotSimulation::add_pulse(std::vector<Pulse>& pulses, Nanoseconds origin, double time_s, double duration_s,
+                                 double value) {
+  const Pulse pulse{origin + nanoseconds(time_s), origin + nanoseconds(time_s + duration_s), value};
+  pulses.push_back(pulse);
+  // Among the changes still to come (a pulse asked for during the run starts no earlier than now).
+  for (const Nanoseconds change : {pulse.start, pulse.end}) {
+    const auto ahead = scenario_changes_.begin() + static_cast<std::ptrdiff_t>(next_scenario_change_);
+    scenario_changes_.insert(std::upper_bound(ahead, scenario_changes_.end(), change), change);
+  }
+}
+
+void BalbotSimulation::push(const BalbotPush& push) {
+  add_pulse(pushes_, 0, push.time_s, push.duration_s, push.force_n);
+}
+
+void BalbotSimulation::disturb_duty(const BalbotDutyDisturbance& pulse) {
+  add_pulse(disturbances_, 0, pulse.time_s, pulse.duration_s, pulse.duty);
+}
+
+void BalbotSimulation::restart(double time_s) { restart_at_ = std::max(nanoseconds(time_s), now_); }
+
+void BalbotSimulation::pick_up_and_put_back() {
+  end_segment_here();  // the motion so far, with what moved it
+  Nanoseconds origin = now_;
+  if (rig_ == BalbotRig::on_ground) {
+    // Grabbed: the wheels stop rolling, and the body turns about the axle (the wheels on the floor) from its tilt and
+    // rate now to the scenario's tilt at rest, along a cubic: the gyroscope sees a smooth rate, no jump.
+    MechanicalState from = committed_;
+    from.v = 0;
+    MechanicalState to = from;
+    to.theta = initial_.theta;
+    to.omega = 0;
+    carry_ = balbot::Segment{from, to, seconds(carry_time), parameters_.wheel_radius_m};
+    carry_start_ = now_;
+    carry_end_ = now_ + carry_time;
+    committed_ = from;
+    origin = carry_end_;
+  } else {
+    committed_.v = initial_.v;  // the rigs hold the body still anyway: their wheels as at the start
+  }
+  current_ = committed_;
+  current_valid_ = true;
+  // The scenario starts again where the hand puts the robot down: held until its release, its pulses after.
+  plan_scenario(origin);
+  apply_scenario();
+}
+
+balbot::Derivative BalbotSimulation::carry_acceleration(Nanoseconds time) const {
+  const double tau = static_cast<double>(time - carry_start_) / static_cast<double>(carry_end_ - carry_start_);
+  const double per_second = 1 / seconds(carry_end_ - carry_start_);
+  const MechanicalState s = carry_.at(tau);
+  return {s.v, s.omega, carry_.x.curvature(tau) * per_second * per_second,
+          carry_.theta.curvature(tau) * per_second * per_second};
 }
 
 void BalbotSimulation::set_duty(Motor motor, double percent) {
@@ -328,7 +408,7 @@ balbot::ImuSample BalbotSimulation::imu_sample(const MechanicalState& s) const {
   double force_x = 0;
   double force_z = g;
   if (rig_ == BalbotRig::on_ground) {
-    const balbot::Derivative d = mechanics_.derivative(s, prepared_drive());
+    const balbot::Derivative d = carried() ? carry_acceleration(now_) : mechanics_.derivative(s, prepared_drive());
     const double h = sensor_height_;
     force_x = d.a - h * (cosine * d.alpha - sine * s.omega * s.omega);
     force_z = g - h * (sine * d.alpha + cosine * s.omega * s.omega);

@@ -38,6 +38,13 @@ class BalbotSimulation {
 
   void advance(balbot::Nanoseconds target, const RaiseInterrupt& raise);
 
+  // Disturbances asked for during the run (BalbotPlant::disturb), from `time_s` on, the time of the next advance():
+  // exactly what the scenario's own pushes and duty disturbances planned for then do.
+  void push(const BalbotPush& push);
+  void disturb_duty(const BalbotDutyDisturbance& pulse);
+  // The robot picked up at `time_s` and put back as the scenario starts it (README.md, "Restart").
+  void restart(double time_s);
+
   // The model drives.
   void set_duty(Motor motor, double percent);
   void set_pin(Pin pin, bool high);
@@ -64,7 +71,7 @@ class BalbotSimulation {
 
  private:
   using Nanoseconds = balbot::Nanoseconds;
-  enum class Source { scenario, pwm_period, left_hall, right_hall, echo, data_ready, spi, adc, ipc, none };
+  enum class Source { restart, scenario, pwm_period, left_hall, right_hall, echo, data_ready, spi, adc, ipc, none };
   struct Next {
     Nanoseconds time = balbot::never;
     Source source = Source::none;
@@ -81,6 +88,15 @@ class BalbotSimulation {
 
   void ensure_segment(Nanoseconds target);
   void commit_segment();
+  void end_segment_here();
+  // The motion from the committed state to `time` inside the segment ahead: integrated with the drive, or the hand's.
+  [[nodiscard]] balbot::MechanicalState moved_to(Nanoseconds time);
+  [[nodiscard]] bool carried() const { return committed_time_ < carry_end_; }
+  void pick_up_and_put_back();
+  // The scenario's release and pulses from `origin` on, in place of anything planned before.
+  void plan_scenario(Nanoseconds origin);
+  void add_pulse(std::vector<Pulse>& pulses, Nanoseconds origin, double time_s, double duration_s, double value);
+  [[nodiscard]] balbot::Derivative carry_acceleration(Nanoseconds time) const;
   void move_to(Nanoseconds time);
   [[nodiscard]] balbot::MechanicalState state_at(Nanoseconds time) const;
   [[nodiscard]] const balbot::MechanicalState& current() const;
@@ -125,8 +141,16 @@ class BalbotSimulation {
   mutable balbot::Drive drive_;
   std::vector<Pulse> pushes_;
   std::vector<Pulse> disturbances_;
-  std::vector<Nanoseconds> scenario_changes_;
+  std::vector<Nanoseconds> scenario_changes_;  // sorted
   std::size_t next_scenario_change_ = 0;
+
+  // Restart: what the scenario plans, relative to its start, to plan again; a restart asked for; the hand's motion.
+  BalbotScenario scenario_;
+  balbot::MechanicalState initial_;
+  Nanoseconds restart_at_ = balbot::never;
+  balbot::Segment carry_;
+  Nanoseconds carry_start_ = 0;
+  Nanoseconds carry_end_ = 0;
   Nanoseconds next_pwm_period_;
 
   // Sensors.

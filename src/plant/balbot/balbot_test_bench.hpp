@@ -3,9 +3,11 @@
 // recorded and handed to a test's handler (which plays the model's interrupt tasks), and helpers for the model's
 // side of the SPI bus.
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -109,6 +111,81 @@ inline double word(const std::vector<double>& bytes, std::size_t high) {
   const auto bits =
       static_cast<std::uint16_t>((static_cast<unsigned>(bytes[high]) << 8U) | static_cast<unsigned>(bytes[high + 1]));
   return static_cast<std::int16_t>(bits);
+}
+
+// A controller as the model would run it: EXTI8 requests the burst read, DMA2_Stream2 filters the tilt
+// (complementary filter of atan2(a_x, a_z) and -g_y / 16.4), the 1 ms periodic task runs a PID on it and sets the
+// driver's pins as the thesis' motor logic does. Motors driven by voltage turn the wheels at a speed proportional to
+// the duty, so a PD on the tilt alone cannot balance; the integral term (the thesis' tunable I) makes it.
+class BalancingController {
+ public:
+  explicit BalancingController(BalbotBench& bench) : bench_(bench) {
+    bench.on_interrupt = [this](std::string_view interrupt) {
+      if (interrupt == "EXTI8") {
+        std::vector<double> request(15, 0.0);
+        request[0] = 0x3B | 0x80;
+        bench_.spi(request);
+      }
+      if (interrupt == "DMA2_Stream2") {
+        const std::vector<double> bytes = bench_.get("spi:SPI5", 15);
+        const double accel_tilt = std::atan2(word(bytes, 1), word(bytes, 5)) * 180 / std::numbers::pi;
+        rate_ = -word(bytes, 11) / 16.4;
+        theta_ = samples_++ == 0 ? accel_tilt : 0.998 * (theta_ + rate_ * 1e-3) + 0.002 * accel_tilt;
+      }
+    };
+  }
+
+  // The periodic task.
+  void step() {
+    if (samples_ == 0) return;
+    const bool stop = std::abs(theta_) > 60;
+    const double integral = integral_ + theta_ * 1e-3;
+    double y = -(0.1 * theta_ + 3.0 * integral + 0.005 * rate_);
+    // Clamping anti-windup, as the thesis' PID has: lying on the floor, held or saturated, nothing winds up.
+    if (!stop && std::abs(y) < 1)
+      integral_ = integral;
+    else
+      y = -(0.1 * theta_ + 3.0 * integral_ + 0.005 * rate_);
+    bench_.set("gpio:PA12", stop ? 0 : 1);
+    bench_.set("gpio:PE9", y >= 0 ? 1 : 0);  // left: forward is clockwise
+    bench_.set("gpio:PD1", y >= 0 ? 0 : 1);
+    bench_.set("gpio:PE10", y >= 0 ? 0 : 1);  // right: outputs swapped (mirrored motor)
+    bench_.set("gpio:PD14", y >= 0 ? 1 : 0);
+    const double duty = std::min(std::abs(y), 1.0) * 100;
+    bench_.set("pwm:TIM1/4", duty);
+    bench_.set("pwm:TIM1/3", duty);
+  }
+
+  [[nodiscard]] double theta() const { return theta_; }
+
+ private:
+  BalbotBench& bench_;
+  double theta_ = 0;
+  double rate_ = 0;
+  double integral_ = 0;
+  int samples_ = 0;
+};
+
+// The MPU6500 set up as fast as it allows (reset, 100 ms, then a write per tick), then the controller; the truth
+// after every tick. `after_tick` runs last in each tick (a test's disturbances for the next one).
+inline std::vector<std::array<double, BalbotTruth::count>> balance(
+    const BalbotScenario& scenario, double seconds,
+    const std::function<void(double now, BalbotPlant& plant, const BalancingController& controller)>& after_tick = {}) {
+  BalbotBench bench{scenario};
+  bench.record = false;
+  BalancingController controller{bench};
+  std::vector<std::array<double, BalbotTruth::count>> truth;
+  const std::vector<std::vector<double>> writes{{0x6B, 0x01}, {0x6A, 0x10}, {0x19, 0x00}, {0x1A, 0x01},
+                                                {0x1B, 0x18}, {0x1C, 0x08}, {0x38, 0x01}};
+  bench.spi({0x6B, 0x80});
+  bench.run_until(seconds, [&](double now) {
+    const auto tick = static_cast<std::size_t>(std::llround(now * 1000));
+    if (tick >= 101 && tick < 101 + writes.size()) bench.spi(writes[tick - 101]);
+    controller.step();
+    truth.push_back(bench.plant.truth().values());
+    if (after_tick) after_tick(now, bench.plant, controller);
+  });
+  return truth;
 }
 
 }  // namespace duet::plant::testing

@@ -13,6 +13,7 @@ struct Cubic {
 
   [[nodiscard]] double value(double t) const { return c0 + t * (c1 + t * (c2 + t * c3)); }
   [[nodiscard]] double slope(double t) const { return c1 + t * (2 * c2 + t * 3 * c3); }
+  [[nodiscard]] double curvature(double t) const { return 2 * c2 + 6 * c3 * t; }
   [[nodiscard]] Cubic scaled(double factor, double offset) const {
     return {c0 * factor + offset, c1 * factor, c2 * factor, c3 * factor};
   }

@@ -19,6 +19,26 @@ namespace duet::plant {
 // Raises the interrupt of that name now; the simulation runs the interrupt task it triggers.
 using RaiseInterrupt = std::function<void(std::string_view interrupt)>;
 
+// A disturbance a plant offers to whoever watches a run (a push, a restart), described so that a page or a script
+// can offer it without knowing the plant: its name and its arguments, each a number within limits.
+struct DisturbanceArgument {
+  std::string name;  // "force_n"
+  std::string unit;  // "N"
+  double minimum = 0;
+  double maximum = 0;
+  double default_value = 0;
+};
+struct DisturbanceKind {
+  std::string name;     // "push"
+  std::string summary;  // what it does, in a few words
+  std::vector<DisturbanceArgument> arguments;
+};
+// One disturbance asked for: a kind's name and a value per argument, in the kind's order.
+struct Disturbance {
+  std::string name;
+  std::vector<double> arguments;
+};
+
 class Plant {
  public:
   Plant() = default;
@@ -41,6 +61,16 @@ class Plant {
   };
   [[nodiscard]] virtual std::vector<Observable> observables() const { return {}; }
   virtual void observe(std::span<double> values) const { (void)values; }
+
+  // The disturbances the plant offers; none unless a plant says.
+  [[nodiscard]] virtual std::vector<DisturbanceKind> disturbances() const { return {}; }
+  // Between two advance() calls: `disturbance` (one of disturbances(), its arguments within their limits) acts from
+  // `time_s` on, the time the next advance() moves to, exactly as if the plant had been made with it planned for
+  // then. PlantControls (plant_controls.hpp) calls it on the plant's thread.
+  virtual void disturb(const Disturbance& disturbance, double time_s) {
+    (void)disturbance;
+    (void)time_s;
+  }
 };
 
 // A plant that holds the last value written to each resource and reads back whatever was written to it (zeros for a

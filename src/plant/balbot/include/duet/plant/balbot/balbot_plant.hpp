@@ -35,6 +35,9 @@ class BalbotPlant final : public Plant {
   // The truth's values (BalbotTruth::names()), but time.
   [[nodiscard]] std::vector<Observable> observables() const override;
   void observe(std::span<double> values) const override;
+  // push (force_n, duration_s), duty_pulse (duty, duration_s) and restart: README.md, "Disturbances during a run".
+  [[nodiscard]] std::vector<DisturbanceKind> disturbances() const override;
+  void disturb(const Disturbance& disturbance, double time_s) override;
 
   // The state now (inside an interrupt task: at the interrupt's instant).
   [[nodiscard]] BalbotTruth truth() const;
