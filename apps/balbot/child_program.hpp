@@ -110,11 +110,13 @@ inline double number_after(const std::string& line, const std::string& label) {
   return at == std::string::npos ? NAN : std::strtod(line.c_str() + at + label.size(), nullptr);
 }
 
-// Where `duet plant serve` says it listens ("plant balbot listening on 127.0.0.1:40312"): its first line.
+// Where `duet plant serve` says it listens ("plant balbot listening on 127.0.0.1:40312"): its first line. The
+// second, read too, says where it takes disturbances ("plant balbot control on ...").
 inline std::string listening_address(Program& server) {
   const std::string line = server.line();
   const std::string prefix = "plant balbot listening on ";
   EXPECT_TRUE(line.starts_with(prefix)) << line;
+  EXPECT_TRUE(server.line().starts_with("plant balbot control on "));
   return line.starts_with(prefix) ? line.substr(prefix.size()) : std::string{};
 }
 

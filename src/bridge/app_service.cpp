@@ -64,7 +64,8 @@ class AppService::Impl {
                          dashboard::Backend{.set = [this](dashboard::Client& client, const std::string& name,
                                                           double value) { set(client, name, value); },
                                             .describe = [this](dashboard::Client& client) { describe(client); },
-                                            .status = [this] { return status_json(); }});
+                                            .status = [this] { return status_json(); }},
+                         options_.plant_control);
     }
   }
 

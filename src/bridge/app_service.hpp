@@ -13,9 +13,11 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "channel.hpp"
+#include "duet/dashboard/dashboard.hpp"
 #include "duet/support/result.hpp"
 
 namespace duet::bridge {
@@ -27,7 +29,9 @@ struct AppServiceOptions {
   std::uint16_t websocket_port = 8765;  // 0: any free port
   bool websocket = true;
   std::filesystem::path web_root;  // the dashboard's files, served over HTTP on the WebSocket's port
-  bool csv = false;                // CSV on standard output, sets on standard input
+  // A simulated plant's control endpoint (duet pil): the page may push and restart it. None on the board.
+  std::optional<dashboard::PlantControlAddress> plant_control;
+  bool csv = false;  // CSV on standard output, sets on standard input
   std::size_t channel_chunk = 496;
   // Extra status, as a JSON object's text, merged into status messages (the XCP relay's counters).
   std::function<std::string()> extra_status;

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "pty_application.hpp"
+#include "served_plant.hpp"
 #include "websocket_client.hpp"
 
 namespace duet::bridge {
@@ -74,6 +75,7 @@ TEST_F(AppServiceTest, ADashboardGetsTheDescriptionTelemetryAndSetsTheGains) {
   EXPECT_EQ((*description)["telemetry"][1]["unit"], "V");
   EXPECT_EQ((*description)["parameters"][2]["name"], "D");
   EXPECT_EQ((*description)["parameters"][2]["type"], "float32");
+  EXPECT_FALSE(description->contains("plant"));  // the board's bridge: no simulated plant behind it
 
   const auto sample = client.next("telemetry");
   ASSERT_TRUE(sample);
@@ -164,6 +166,38 @@ TEST(AppServiceRestart, ARestartedApplicationIsDescribedAgainAndServes) {
   service.stop();
   thread.join();
   std::filesystem::remove(link);
+}
+
+TEST(AppServicePlant, BesideDuetPilThePageMayPushThePlant) {
+  plant_control::testing::ServedPlant plant;
+  ASSERT_TRUE(plant.listening());
+  PtyApplication application;
+  application.start();
+  AppServiceOptions options;
+  options.channel.path = application.path();
+  options.channel_uri = "tty:" + application.path();
+  options.websocket_port = 0;
+  options.plant_control = dashboard::PlantControlAddress{plant.host(), plant.port()};
+  AppService service{options};
+  ASSERT_TRUE(service.start().ok());
+  std::thread thread{[&service] { EXPECT_TRUE(service.run().ok()); }};
+
+  WebSocketClient client{service.websocket_port()};
+  std::optional<json> description;
+  for (int attempt = 0; attempt < 10 && !(description && description->contains("plant")); ++attempt) {
+    description = client.next("description");
+  }
+  ASSERT_TRUE(description && description->contains("plant"));
+  EXPECT_EQ((*description)["application"], "balbot");
+  EXPECT_EQ((*description)["plant"]["actions"][1]["name"], "restart");
+  client.send({{"type", "plant"}, {"action", "restart"}});
+  const auto answer = client.next("plant");
+  ASSERT_TRUE(answer);
+  EXPECT_GT((*answer)["time_s"].get<double>(), 0.0) << answer->dump();
+  EXPECT_EQ(plant.controls().applied().size(), 1U);
+
+  service.stop();
+  thread.join();
 }
 
 }  // namespace

@@ -96,6 +96,7 @@ int run(int argc, char** argv) {
   bool no_websocket = false;
   std::string web = duet::dashboard::default_web_root().string();
   bool csv = false;
+  std::string plant_control;
   bool expose = false;
   bool verbose = false;
   app.add_option("--channel", channel, "The XCP channel: tty:/dev/ttyRPMSG0, unix:/path or tcp://host:port");
@@ -106,6 +107,8 @@ int run(int argc, char** argv) {
   app.add_option("--web", web, "The dashboard's built files, served on the WebSocket's port")
       ->capture_default_str()
       ->check(CLI::ExistingDirectory);
+  app.add_option("--plant-control", plant_control,
+                 "A simulated plant's control endpoint (duet pil prints it): the dashboard may push and restart it");
   app.add_flag("--csv", csv, "Print the application's telemetry as CSV on stdout; name=value lines on stdin set");
   app.add_flag("--expose", expose, "Allow listening on addresses other than 127.0.0.1 (the network)");
   app.add_flag("--verbose", verbose, "Log every master that connects and leaves");
@@ -153,6 +156,15 @@ int run(int argc, char** argv) {
     options.web_root = web;
     options.csv = csv;
     options.verbose = verbose;
+    if (!plant_control.empty()) {
+      // Where to connect to, not to listen on: any address is the user's choice.
+      auto control = parse_endpoint("--plant-control", plant_control, true);
+      if (!control) {
+        std::cerr << "duet-bridge: " << control.error() << '\n';
+        return 2;
+      }
+      options.plant_control = duet::dashboard::PlantControlAddress{control.value().address, control.value().port};
+    }
     if (relay) options.extra_status = [&relay] { return relay_status_json(*relay); };
     service.emplace(options);
   }

@@ -25,6 +25,7 @@ struct MonitorCommandOptions {
   bool expose = false;
   std::string web = dashboard::default_web_root().string();
   int timeout_ms = 1000;
+  std::string plant_control;  // HOST:PORT
 };
 
 ExitCode fail(Streams streams, const std::string& message) {
@@ -48,6 +49,12 @@ ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
     target = parsed.value();
   }
 
+  std::optional<dashboard::PlantControlAddress> plant_control;
+  if (!options.plant_control.empty()) {
+    const link::HostPort control = link::parse_host_port(options.plant_control).value();  // checked by the validator
+    plant_control = dashboard::PlantControlAddress{control.host, control.port};
+  }
+
   boost::asio::io_context io;
   auto monitor = monitor::MonitorTarget::create(
       io,
@@ -57,6 +64,7 @@ ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
           .signals = options.signals,
           .event = options.event,
           .server = {.address = listen.host, .port = listen.port, .web_root = options.web, .log_name = "duet monitor"},
+          .plant_control = plant_control,
           .timeout_ms = options.timeout_ms});
   if (!monitor) return fail(streams, monitor.error());
   StopSignals stop;
@@ -87,6 +95,11 @@ Action define_monitor_command(CLI::App& command) {
   command.add_option("--web", options->web, "The dashboard's built files (web/dist)")
       ->capture_default_str()
       ->check(CLI::ExistingDirectory);
+  command
+      .add_option("--plant-control", options->plant_control,
+                  "A simulated plant's control endpoint (duet pil prints it): the page may push and restart it")
+      ->type_name("HOST:PORT")
+      ->check(host_port_validator());
   command.add_option("--timeout-ms", options->timeout_ms, "How long an XCP command may wait for its answer")
       ->capture_default_str()
       ->check(CLI::Range(10, 60'000));

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "duet/link/tcp.hpp"
+#include "host_port_validator.hpp"
 #include "pil_run.hpp"
 
 namespace duet::cli {
@@ -88,6 +89,13 @@ Action define_pil_command(CLI::App& command) {
       ->capture_default_str()
       ->type_name("HOST:PORT")
       ->check(bridge_listen_validator());
+  command
+      .add_option("--plant-control", options->plant_control,
+                  "HOST:PORT on this machine where the plant takes disturbances (push, restart) from the dashboards; "
+                  "port 0 takes a free port (printed)")
+      ->capture_default_str()
+      ->type_name("HOST:PORT")
+      ->check(host_port_validator());
   command.add_flag(
       "--no-bridge", [options](std::int64_t) { options->bridge = false; },
       "No bridge: the firmware's XCP and application channels stay unix sockets (printed)");

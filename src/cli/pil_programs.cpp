@@ -52,15 +52,17 @@ std::vector<std::string> qemu_command(const QemuSetup& setup) {
 }
 
 std::vector<std::string> bridge_command(const BridgeSetup& setup) {
-  return {setup.bridge,
-          "--channel",
-          "unix:" + (setup.folder / "xcp.sock").string(),
-          "--app-channel",
-          "unix:" + (setup.folder / "app.sock").string(),
-          "--listen",
-          setup.xcp,
-          "--websocket",
-          setup.websocket};
+  std::vector<std::string> command{setup.bridge,
+                                   "--channel",
+                                   "unix:" + (setup.folder / "xcp.sock").string(),
+                                   "--app-channel",
+                                   "unix:" + (setup.folder / "app.sock").string(),
+                                   "--listen",
+                                   setup.xcp,
+                                   "--websocket",
+                                   setup.websocket};
+  if (!setup.plant_control.empty()) command.insert(command.end(), {"--plant-control", setup.plant_control});
+  return command;
 }
 
 std::string default_bridge(const std::filesystem::path& duet_program) {

@@ -28,6 +28,7 @@ struct BridgeSetup {
   std::filesystem::path folder;  // holds QEMU's xcp.sock and app.sock
   std::string xcp;               // HOST:PORT for the XCP master
   std::string websocket;         // HOST:PORT for WebSocket clients
+  std::string plant_control;     // HOST:PORT of the plant's control endpoint, or empty
 };
 
 [[nodiscard]] std::vector<std::string> bridge_command(const BridgeSetup& setup);

@@ -17,6 +17,7 @@
 #include "firmware_console.hpp"
 #include "pil_programs.hpp"
 #include "pil_summary.hpp"
+#include "plant_control_endpoint.hpp"
 #include "plant_session.hpp"
 #include "stop_signals.hpp"
 #include "temporary_folder.hpp"
@@ -198,7 +199,8 @@ class Supervisor {
   int bridge_exit_code_ = 0;
 };
 
-void print_how_to_connect(const PilOptions& options, const std::filesystem::path& folder, std::ostream& out) {
+void print_how_to_connect(const PilOptions& options, const std::filesystem::path& folder,
+                          const PlantControlEndpoint& control, std::ostream& out) {
   out << "duet pil: " << std::filesystem::path{options.firmware}.filename().string()
       << " on QEMU mps2-an386 (-icount shift=" << options.icount_shift << "), plant " << options.plant.name
       << (options.lock_step ? ", lock-step\n" : ", real time\n");
@@ -209,12 +211,17 @@ void print_how_to_connect(const PilOptions& options, const std::filesystem::path
     out << "  dashboard  http://" << options.websocket
         << "/ (the bridge's: the application channel; its JSON API on the same port, docs/DASHBOARD.md)\n";
     if (options.plant.name == "balbot") {
-      out << "  monitor    duet monitor --xcp tcp://" << options.xcp
-          << " --a2l apps/balbot/generated/balbot.a2l (the dashboard over XCP)\n";
+      out << "  monitor    duet monitor --xcp tcp://" << options.xcp << " --a2l apps/balbot/generated/balbot.a2l";
+      if (!control.address().empty()) out << " --plant-control " << control.address();
+      out << " (the dashboard over XCP)\n";
     }
   } else {
     out << "  XCP        no bridge (--no-bridge): the firmware's XCP channel is unix:" << (folder / "xcp.sock").string()
         << ", its application channel unix:" << (folder / "app.sock").string() << '\n';
+  }
+  if (!control.address().empty()) {
+    out << "  plant      " << control.actions() << " from the dashboards (Tuning page, Disturb), or JSON lines on "
+        << control.address() << " (docs/LINK.md)\n";
   }
   out << "  Ctrl-C ends the run";
   if (options.duration_s) out << " (else it ends after " << shortest(*options.duration_s) << " s of model time)";
@@ -265,7 +272,8 @@ bool judge(Ending ending, const Supervisor& supervisor, const PlantSession::Outc
 
 // What the summary says, from what the run left behind.
 PilRun summarise(const PilOptions& options, const ChosenPlant& chosen, const RecordingPlant& plant,
-                 const Supervisor& supervisor, const PlantSession::Outcome& outcome, double run_wall_s) {
+                 const PlantControlEndpoint& control, const Supervisor& supervisor,
+                 const PlantSession::Outcome& outcome, double run_wall_s) {
   PilRun run{.lock_step = options.lock_step,
              .icount_shift = options.icount_shift,
              .wall_s = outcome.connected ? outcome.wall_time.count() : run_wall_s,
@@ -284,6 +292,8 @@ PilRun summarise(const PilOptions& options, const ChosenPlant& chosen, const Rec
     run.tilt_after_release = tilt_statistics(plant.recording(), scenario->release_time_s);
   }
   run.recording_truncated = plant.truncated();
+  run.disturbances = control.applied();
+  run.offered = control.offered();
   if (options.bridge) run.xcp = parse_bridge_counters(supervisor.bridge_output());
   return run;
 }
@@ -307,7 +317,9 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   if (!folder) return fail(folder.error());
   auto pipes = link::NamedPipes::create(folder.value().path());
   if (!pipes) return fail("the plant: " + pipes.error());
-  RecordingPlant plant{chosen.value().make(), true};  // always: the summary's tilt comes from it
+  auto control = PlantControlEndpoint::open(chosen.value(), options.plant.name, options.plant_control);
+  if (!control) return fail(control.error());
+  RecordingPlant plant{control.value().controlled(chosen.value().make()), true};  // always: the summary's tilt
 
   StopSignals signals;
   const QemuSetup qemu_setup{options.qemu, options.firmware, options.icount_shift, options.duration_s,
@@ -320,8 +332,9 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
     const std::string program = options.bridge_program.empty()
                                     ? default_bridge(std::filesystem::read_symlink("/proc/self/exe", no_link))
                                     : options.bridge_program;
-    auto started = ChildProcess::start(bridge_command({program, folder.value().path(), options.xcp, options.websocket}),
-                                       {ChildProcess::Output::discard, ChildProcess::Output::pipe});
+    auto started = ChildProcess::start(
+        bridge_command({program, folder.value().path(), options.xcp, options.websocket, control.value().address()}),
+        {ChildProcess::Output::discard, ChildProcess::Output::pipe});
     if (!started) return fail(started.error() + " (build the target duet-bridge, give --bridge PATH, or --no-bridge)");
     bridge.emplace(std::move(started).value());
   }
@@ -337,7 +350,7 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   }
   const Clock::time_point start = Clock::now();
   PlantSession session{std::move(pipes).value(), plant, {.paced = !options.lock_step}, 10s};
-  print_how_to_connect(listening, folder.value().path(), streams.out);
+  print_how_to_connect(listening, folder.value().path(), control.value(), streams.out);
 
   Supervisor supervisor{streams, console, qemu.value(), bridge ? &*bridge : nullptr, session, std::move(bridge_start)};
   const Ending ending = supervisor.watch(signals);
@@ -348,7 +361,7 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   const double run_wall_s = std::chrono::duration<double>(Clock::now() - start).count();
 
   const bool went_well = judge(ending, supervisor, outcome, session_ended_first, streams.out, streams.err);
-  const PilRun run = summarise(options, chosen.value(), plant, supervisor, outcome, run_wall_s);
+  const PilRun run = summarise(options, chosen.value(), plant, control.value(), supervisor, outcome, run_wall_s);
   streams.out << format_summary(run) << std::flush;
 
   const Status written = write_recording_files(plant.recording(), options.recording,

@@ -19,8 +19,9 @@ struct PilOptions {
   std::optional<double> duration_s;  // told to the firmware; none: until a signal
   bool lock_step = false;            // false: the plant keeps real time
   int icount_shift = 2;
-  std::string xcp = "127.0.0.1:5555";        // where the bridge takes an XCP master
-  std::string websocket = "127.0.0.1:8765";  // where the bridge takes WebSocket clients
+  std::string xcp = "127.0.0.1:5555";         // where the bridge takes an XCP master
+  std::string websocket = "127.0.0.1:8765";   // where the bridge takes WebSocket clients
+  std::string plant_control = "127.0.0.1:0";  // where the plant takes disturbances (the dashboards relay them)
   bool bridge = true;
   std::string bridge_program;  // empty: default_bridge()
   std::string qemu = "qemu-system-arm";

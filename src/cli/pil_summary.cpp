@@ -6,6 +6,8 @@
 #include <sstream>
 #include <string_view>
 
+#include "pil_programs.hpp"
+
 namespace duet::cli {
 namespace {
 
@@ -99,6 +101,31 @@ void xcp_lines(const PilRun& run, std::ostream& out) {
   }
 }
 
+// "push force_n=5 duration_s=0.05 at 12.345 s": numbers that read back as the same doubles.
+std::string describe_applied(const plant::AppliedDisturbance& applied,
+                             const std::vector<plant::DisturbanceKind>& offered) {
+  std::string text = applied.disturbance.name;
+  const auto kind = std::find_if(offered.begin(), offered.end(), [&](const plant::DisturbanceKind& candidate) {
+    return candidate.name == applied.disturbance.name;
+  });
+  for (std::size_t k = 0; k < applied.disturbance.arguments.size(); ++k) {
+    const std::string name =
+        kind != offered.end() && k < kind->arguments.size() ? kind->arguments[k].name : "#" + std::to_string(k);
+    text += " " + name + "=" + shortest(applied.disturbance.arguments[k]);
+  }
+  return text + " at " + shortest(applied.time_s) + " s";
+}
+
+// Each with its model time, exactly: to repeat the run, a scenario with these pushes at these times.
+void disturbance_lines(const PilRun& run, std::ostream& out) {
+  if (run.disturbances.empty()) return;
+  out << "  disturbed " << run.disturbances.size() << (run.disturbances.size() == 1 ? " time" : " times")
+      << " through the plant's control endpoint:\n";
+  for (const plant::AppliedDisturbance& applied : run.disturbances) {
+    out << "            " << describe_applied(applied, run.offered) << '\n';
+  }
+}
+
 }  // namespace
 
 std::optional<TiltStatistics> tilt_statistics(const model::Recording& recording, double from_s) {
@@ -140,6 +167,7 @@ std::string format_summary(const PilRun& run) {
   } else {
     out << "  link      the firmware never connected\n";
   }
+  disturbance_lines(run, out);
   firmware_lines(run, out);
   xcp_lines(run, out);
   return out.str();

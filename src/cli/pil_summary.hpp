@@ -10,6 +10,7 @@
 #include "bridge_counters.hpp"
 #include "duet/link/serve.hpp"
 #include "duet/model/simulation.hpp"
+#include "duet/plant/plant_controls.hpp"
 #include "firmware_console.hpp"
 
 namespace duet::cli {
@@ -45,6 +46,9 @@ struct PilRun {
   FirmwareReport firmware;
   bool bridge = true;             // false: --no-bridge
   std::optional<XcpTraffic> xcp;  // the bridge's counters, when it said them
+  // What the dashboards pushed and restarted, with the model times, and what the plant offers (for the names).
+  std::vector<plant::AppliedDisturbance> disturbances;
+  std::vector<plant::DisturbanceKind> offered;
 };
 
 // The summary, several lines, each ending with a newline.

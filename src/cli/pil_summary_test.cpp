@@ -110,6 +110,22 @@ TEST(PilSummary, TheWholeText) {
             "masters served\n");
 }
 
+TEST(PilSummary, EveryDisturbanceWithItsExactModelTime) {
+  PilRun run;
+  run.bridge = false;
+  run.offered = {{"push", "", {{"force_n", "N", -50, 50, 5}, {"duration_s", "s", 0.001, 1, 0.05}}},
+                 {"restart", "", {}}};
+  run.disturbances = {{{"push", {-7.5, 0.05}}, 9 * 0.001}, {{"restart", {}}, 20.001}};
+  const std::string text = format_summary(run);
+  EXPECT_NE(text.find("  link      the firmware never connected\n"
+                      "  disturbed 2 times through the plant's control endpoint:\n"
+                      "            push force_n=-7.5 duration_s=0.05 at 0.009000000000000001 s\n"
+                      "            restart at 20.001 s\n"
+                      "  firmware  "),
+            std::string::npos)
+      << text;
+}
+
 TEST(PilSummary, WhatIsMissingIsSaid) {
   PilRun run;
   run.lock_step = true;

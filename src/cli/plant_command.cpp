@@ -11,6 +11,7 @@
 #include "duet/link/tcp.hpp"
 #include "host_port_validator.hpp"
 #include "plant_choice.hpp"
+#include "plant_control_endpoint.hpp"
 #include "recording_plant.hpp"
 
 namespace duet::cli {
@@ -22,6 +23,7 @@ struct ServeOptions {
   bool once = false;
   double timeout_s = 10;
   RecordingFiles recording;  // the plant's observables, a row per TICK, written when a session ends
+  std::string plant_control = "127.0.0.1:0";
 };
 
 std::string describe(const link::ServeSummary& summary) {
@@ -67,18 +69,29 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
     streams.err << prefix << listener.error() << '\n';
     return ExitCode::failure;
   }
+  auto control = PlantControlEndpoint::open(chosen.value(), options.plant.name, options.plant_control);
+  if (!control) {
+    streams.err << prefix << control.error() << '\n';
+    return ExitCode::failure;
+  }
   const link::Timeout session_timeout =
       options.timeout_s == 0 ? link::no_timeout
                              : link::Timeout{static_cast<link::Timeout::rep>(std::ceil(options.timeout_s * 1000))};
   streams.out << "plant " << options.plant.name << " listening on " << link::to_string(listener.value().address())
               << std::endl;  // a line scripts wait for: flushed now
+  if (!control.value().address().empty()) {
+    streams.out << "plant " << options.plant.name << " control on " << control.value().address() << " ("
+                << control.value().actions() << ": duet monitor --plant-control, or JSON lines, docs/LINK.md)"
+                << std::endl;
+  }
   for (;;) {
     auto accepted = listener.value().accept(link::no_timeout, session_timeout);
     if (!accepted) {
       streams.err << prefix << accepted.error() << '\n';
       return ExitCode::failure;
     }
-    RecordingPlant plant{chosen.value().make(), !options.recording.csv.empty() || !options.recording.plot.empty()};
+    RecordingPlant plant{control.value().controlled(chosen.value().make()),
+                         !options.recording.csv.empty() || !options.recording.plot.empty()};
     auto served = link::serve(plant, *accepted.value().stream);
     if (served) {
       streams.out << "served " << accepted.value().peer << ": " << describe(served.value()) << std::endl;
@@ -118,6 +131,13 @@ Action define_plant_command(CLI::App& command) {
                    "Write the plant's own quantities, a row per TICK, to FILE when a session ends (the last session's)")
       ->type_name("FILE");
   serve->add_option("--plot", options->recording.plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
+  serve
+      ->add_option("--plant-control", options->plant_control,
+                   "HOST:PORT on this machine where the plant takes disturbances (push, restart) while a firmware "
+                   "is served; port 0 takes a free port (a line says which)")
+      ->capture_default_str()
+      ->type_name("HOST:PORT")
+      ->check(host_port_validator());
   return [options](Streams streams) { return serve_plant(*options, streams); };
 }
 

@@ -2,6 +2,7 @@
 // connects over TCP (the program runs as a child process, its first line of output read to learn its port).
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -125,14 +126,22 @@ class Child {
   std::unique_ptr<link::FdStream> errors_;
 };
 
-// Where the child listens, from its first line ("plant NAME listening on HOST:PORT").
-link::HostPort listening_address(Child& program, const std::string& name) {
+// The address after `prefix` at the start of the child's next line.
+link::HostPort address_in_line(Child& program, const std::string& prefix) {
   const std::string line = program.line();
-  const std::string prefix = "plant " + name + " listening on ";
   EXPECT_TRUE(line.starts_with(prefix)) << line;
-  auto address = link::parse_host_port(line.substr(std::min(prefix.size(), line.size())));
+  const std::string rest = line.substr(std::min(prefix.size(), line.size()));
+  auto address = link::parse_host_port(rest.substr(0, rest.find(' ')));
   EXPECT_TRUE(address.ok()) << line;
   return address ? address.value() : link::HostPort{};
+}
+
+// Where the child listens, from its first line ("plant NAME listening on HOST:PORT"); for a plant that offers
+// disturbances (the robot), the next line says where it takes them ("plant NAME control on HOST:PORT (...)").
+link::HostPort listening_address(Child& program, const std::string& name) {
+  const link::HostPort address = address_in_line(program, "plant " + name + " listening on ");
+  if (name == "balbot") (void)address_in_line(program, "plant balbot control on ");
+  return address;
 }
 
 TEST(PlantCommand, TheProgramServesOneFirmwareAndSaysHowItWent) {
@@ -220,6 +229,46 @@ TEST(PlantCommand, TheRobotsOwnQuantitiesATickAfterATickAsCsvAndPlot) {
   EXPECT_NE(plot.value().find("<svg"), std::string::npos);
   EXPECT_NE(plot.value().find("theta_deg"), std::string::npos);
   for (const auto& path : {scenario, csv, svg}) std::filesystem::remove(path);
+}
+
+// A line of JSON from the plant-control endpoint.
+nlohmann::json next_message(link::Stream& stream) {
+  std::string text;
+  std::uint8_t byte = 0;
+  while (stream.read_exactly({&byte, 1}).ok() && byte != '\n') text += static_cast<char>(byte);
+  return nlohmann::json::parse(text, nullptr, false);
+}
+void send_line(link::Stream& stream, const nlohmann::json& message) {
+  const std::string text = message.dump() + "\n";
+  EXPECT_TRUE(stream.write_all({reinterpret_cast<const std::uint8_t*>(text.data()), text.size()}).ok());
+}
+
+TEST(PlantCommand, TheRobotTakesAPushWhileAFirmwareIsServedAtTheTimeOfItsNextTick) {
+  Child program{{"plant", "serve", "balbot", "--listen", ":0", "--once", "--plant-control", "127.0.0.1:0"}};
+  ASSERT_TRUE(program.started());
+  const link::HostPort address = address_in_line(program, "plant balbot listening on ");
+  const link::HostPort control_address = address_in_line(program, "plant balbot control on ");
+  auto control = link::connect_tcp(control_address, 10s);
+  ASSERT_TRUE(control.ok()) << control.error();
+  EXPECT_EQ(next_message(*control.value())["plant"], "balbot");  // the description first
+  send_line(*control.value(), {{"type", "plant"}, {"action", "push"}, {"id", 1}});
+  EXPECT_EQ(next_message(*control.value())["error"], "the plant is not running (no firmware is connected to it)");
+
+  auto stream = link::connect_tcp(address, 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.001});
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  connected.value()->advance(0, [](std::string_view) {});
+  send_line(*control.value(), {{"type", "plant"}, {"action", "push"}, {"force_n", 3}, {"id", 2}});
+  ::usleep(200'000);  // the request waits for the next tick
+  connected.value()->advance(0.001, [](std::string_view) {});
+  const nlohmann::json answer = next_message(*control.value());
+  EXPECT_EQ(answer["id"], 2);
+  EXPECT_EQ(answer["time_s"], 0.001) << answer.dump();
+  EXPECT_EQ(answer["arguments"]["force_n"], 3.0);
+  EXPECT_TRUE(connected.value()->close().ok());
+  EXPECT_NE(program.line().find(": 2 ticks, "), std::string::npos);
+  EXPECT_EQ(program.wait(), 0);
 }
 
 TEST(PlantCommand, AFirmwareThatBreaksTheLinkFailsTheSession) {

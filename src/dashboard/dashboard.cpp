@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "plant_relay.hpp"
+
 namespace duet::dashboard {
 
 using nlohmann::json;
@@ -48,39 +50,58 @@ std::optional<double> number_member(const json& object, const char* name, double
 
 }  // namespace
 
-Dashboard::Dashboard(boost::asio::io_context& io, ServerOptions options, Backend backend)
+Dashboard::Dashboard(boost::asio::io_context& io, ServerOptions options, Backend backend,
+                     std::optional<PlantControlAddress> plant_control)
     : backend_(std::move(backend)),
       server_(io, std::move(options),
               ServerHandlers{.joined = [this](Client& client) { welcome(client); },
                              .request = [this](Client& client, const json& request) { handle(client, request); }}),
-      status_timer_(std::make_unique<Timer>(io)) {}
+      status_timer_(std::make_unique<Timer>(io)) {
+  if (plant_control) {
+    plant_relay_ = std::make_unique<PlantRelay>(
+        io, std::move(*plant_control),
+        PlantRelay::Handlers{
+            .described = [this] { publish_description(); },
+            .applied = [this](const json& event) { server_.broadcast(dashboard::message(event), Delivery::always); }});
+  }
+}
 
 Dashboard::~Dashboard() = default;
 
 Status Dashboard::start() {
   if (Status started = server_.start(); !started) return started;
   tick_status();
+  if (plant_relay_) plant_relay_->start();
   return done();
 }
 
 void Dashboard::close() {
   server_.close();
   status_timer_->timer.cancel();
+  if (plant_relay_) plant_relay_->close();
 }
 
 void Dashboard::describe(Description description) {
-  json message = {{"type", "description"},          {"application", description.application},
-                  {"backend", description.backend}, {"telemetry_period_us", description.telemetry_period_us},
-                  {"telemetry", json::array()},     {"parameters", json::array()}};
-  for (const Item& item : description.telemetry) message["telemetry"].push_back(item_json(item));
-  for (const Item& item : description.parameters) message["parameters"].push_back(item_json(item));
-  description_message_ = dashboard::message(message);
   parameter_values_.assign(description.parameters.size(), std::nullopt);
   if (recorder_.state() != Recorder::State::idle) {
     recorder_.cancel();  // its signal index may mean another signal now
     server_.broadcast(recorder_message(recorder_.state(), description), Delivery::always);
   }
   description_ = std::move(description);
+  publish_description();
+}
+
+// The target's description, with what the plant behind it offers while its endpoint is reachable.
+void Dashboard::publish_description() {
+  if (!description_) return;
+  const Description& description = *description_;
+  json message = {{"type", "description"},          {"application", description.application},
+                  {"backend", description.backend}, {"telemetry_period_us", description.telemetry_period_us},
+                  {"telemetry", json::array()},     {"parameters", json::array()}};
+  for (const Item& item : description.telemetry) message["telemetry"].push_back(item_json(item));
+  for (const Item& item : description.parameters) message["parameters"].push_back(item_json(item));
+  if (plant_relay_ && plant_relay_->description()) message["plant"] = *plant_relay_->description();
+  description_message_ = dashboard::message(message);
   server_.broadcast(description_message_, Delivery::always);
 }
 
@@ -179,13 +200,19 @@ void Dashboard::handle(Client& client, const json& request) {
     return backend_.set(client, request["name"].get<std::string>(), request["value"].get<double>());
   }
   if (type == "record") return record(client, request);
+  if (type == "plant") {
+    if (plant_relay_) return plant_relay_->request(client, request);
+    return client.send(dashboard::message({{"type", "plant"},
+                                           {"error", "no simulated plant behind this target (no --plant-control)"}}),
+                       Delivery::always);
+  }
   if (type == "cancel_record") {
     recorder_.cancel();
     if (description_) server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
     return;
   }
   if (backend_.request && backend_.request(client, request)) return;
-  client.error("unknown request type '" + type + "': set, describe, status, record or cancel_record");
+  client.error("unknown request type '" + type + "': set, describe, status, record, cancel_record or plant");
 }
 
 void Dashboard::record(Client& client, const json& request) {
@@ -222,6 +249,7 @@ json Dashboard::status() const {
   message["dashboard"] = {{"clients", server_.clients()},
                           {"messages_dropped_for_clients", server_.dropped()},
                           {"files_served", server_.files_served()}};
+  if (plant_relay_) message["plant"] = plant_relay_->status();
   return message;
 }
 

@@ -128,6 +128,8 @@ class Server::Impl::WebSocketClient final : public Client, public std::enable_sh
     if (outgoing_.size() == 1) write();
   }
 
+  std::weak_ptr<Client> handle() override { return shared_from_this(); }
+
   void refuse(const std::string& reason) {
     closing_ = true;
     socket_.async_close(websocket::close_reason{websocket::close_code::try_again_later, reason},

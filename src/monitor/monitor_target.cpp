@@ -120,7 +120,8 @@ class MonitorTarget::Impl {
                              dashboard::Backend{.set = [this](dashboard::Client& client, const std::string& name,
                                                               double value) { set(client, name, value); },
                                                 .describe = [this](dashboard::Client&) { describe(); },
-                                                .status = [this] { return status(); }});
+                                                .status = [this] { return status(); }},
+                             options_.plant_control);
       if (Status started = own_dashboard_->start(); !started) return started;
       dashboard_ = &*own_dashboard_;
     }

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <thread>
 
+#include "served_plant.hpp"
 #include "test_target.hpp"
 #include "websocket_client.hpp"
 
@@ -161,7 +162,9 @@ TEST(MonitorTargetAway, SaysSoAndRefusesWrites) {
   std::thread serving{[&io] { io.run(); }};
   {
     WebSocketClient client{monitor.value()->port()};
-    ASSERT_TRUE(client.next("description"));  // from the A2L, target or not
+    const auto description = client.next("description");  // from the A2L, target or not
+    ASSERT_TRUE(description);
+    EXPECT_FALSE(description->contains("plant"));  // no --plant-control
     client.send({{"type", "set"}, {"name", "gain"}, {"value", 2}});
     const auto error = client.next("error");
     ASSERT_TRUE(error);
@@ -173,6 +176,37 @@ TEST(MonitorTargetAway, SaysSoAndRefusesWrites) {
     } while (status && !(*status)["link"].contains("problem"));
     ASSERT_TRUE(status);
     EXPECT_NE((*status)["link"]["problem"].get<std::string>().find("127.0.0.1:1"), std::string::npos) << *status;
+  }
+  io.stop();
+  serving.join();
+  monitor.value()->stop();
+}
+
+TEST(MonitorTargetPlant, WithAPlantControlEndpointThePageMayPushThePlant) {
+  plant_control::testing::ServedPlant plant;
+  ASSERT_TRUE(plant.listening());
+  boost::asio::io_context io;
+  const Endpoint nobody{Protocol::tcp, "127.0.0.1", 1};  // the plant is there whether the target is or not
+  auto monitor =
+      MonitorTarget::create(io, {.target = nobody,
+                                 .a2l = TestTarget::a2l(nobody),
+                                 .plant_control = dashboard::PlantControlAddress{plant.host(), plant.port()}});
+  ASSERT_TRUE(monitor.ok());
+  ASSERT_TRUE(monitor.value()->start().ok());
+  std::thread serving{[&io] { io.run(); }};
+  {
+    WebSocketClient client{monitor.value()->port()};
+    std::optional<json> description;
+    for (int attempt = 0; attempt < 10 && !(description && description->contains("plant")); ++attempt) {
+      description = client.next("description");
+    }
+    ASSERT_TRUE(description && description->contains("plant"));
+    EXPECT_EQ((*description)["backend"], "monitor");
+    client.send({{"type", "plant"}, {"action", "push"}, {"force_n", -2}});
+    const auto answer = client.next("plant");
+    ASSERT_TRUE(answer);
+    EXPECT_EQ((*answer)["arguments"]["force_n"], -2.0) << answer->dump();
+    EXPECT_TRUE((*answer)["time_s"].is_number());
   }
   io.stop();
   serving.join();

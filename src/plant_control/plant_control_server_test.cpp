@@ -10,45 +10,16 @@
 #include <optional>
 #include <thread>
 
+#include "served_plant.hpp"
+
 namespace duet::plant_control {
 namespace {
 
 using nlohmann::json;
 using namespace std::chrono_literals;
 namespace asio = boost::asio;
-
-class ShovablePlant : public plant::Plant {
- public:
-  void advance(double, const plant::RaiseInterrupt&) override {}
-  void write(std::string_view, std::span<const double>) override {}
-  void read(std::string_view, std::span<double>) override {}
-  [[nodiscard]] std::vector<plant::DisturbanceKind> disturbances() const override { return kinds(); }
-  static std::vector<plant::DisturbanceKind> kinds() {
-    return {{"push", "a shove", {{"force_n", "N", -50, 50, 5}, {"duration_s", "s", 0.001, 1, 0.05}}},
-            {"restart", "again", {}}};
-  }
-};
-
-// A plant served in a thread of its own, a tick every millisecond, as duet pil serves one.
-class Ticking {
- public:
-  explicit Ticking(plant::PlantControls& controls)
-      : plant_(std::make_unique<ShovablePlant>(), controls), thread_([this] {
-          for (int tick = 1; !stop_.load(); ++tick) {
-            plant_.advance(tick * 1e-3, {});
-            std::this_thread::sleep_for(1ms);
-          }
-        }) {}
-  ~Ticking() {
-    stop_ = true;
-    thread_.join();
-  }
-
- private:
-  plant::ControlledPlant plant_;
-  std::atomic<bool> stop_{false};
-  std::thread thread_;
-};
+using testing::ShovablePlant;
+using Ticking = testing::TickingPlant;
 
 // A client reading and writing lines, each read bounded by a timeout.
 class LineClient {

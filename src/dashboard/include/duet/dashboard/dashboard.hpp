@@ -38,6 +38,12 @@ struct Description {
   std::vector<Item> parameters;
 };
 
+// Where a simulated plant takes disturbances (the plant-control endpoint of duet pil or duet plant serve).
+struct PlantControlAddress {
+  std::string host;
+  std::uint16_t port = 0;
+};
+
 struct Backend {
   // Writes a parameter; the answer comes back through Dashboard::parameter (or client.error).
   std::function<void(Client& client, const std::string& name, double value)> set;
@@ -50,9 +56,14 @@ struct Backend {
   std::function<bool(Client& client, const nlohmann::json& request)> request;
 };
 
+class PlantRelay;
+
 class Dashboard {
  public:
-  Dashboard(boost::asio::io_context& io, ServerOptions options, Backend backend);
+  // With `plant_control`, the page's `plant` requests go to that endpoint, and while it is reachable the description
+  // has a `plant` member saying what it offers (PlantRelay).
+  Dashboard(boost::asio::io_context& io, ServerOptions options, Backend backend,
+            std::optional<PlantControlAddress> plant_control = std::nullopt);
   ~Dashboard();
   Dashboard(const Dashboard&) = delete;
   Dashboard& operator=(const Dashboard&) = delete;
@@ -76,6 +87,7 @@ class Dashboard {
 
  private:
   void welcome(Client& client);
+  void publish_description();
   void handle(Client& client, const nlohmann::json& request);
   void record(Client& client, const nlohmann::json& request);
   void feed_recorder(double time_s, std::span<const double> values);
@@ -92,6 +104,7 @@ class Dashboard {
   Message description_message_;
   std::vector<std::optional<double>> parameter_values_;
   Recorder recorder_;
+  std::unique_ptr<PlantRelay> plant_relay_;
 };
 
 }  // namespace duet::dashboard

@@ -42,6 +42,8 @@ class Client {
   virtual ~Client() = default;
   virtual void send(Message message, Delivery delivery) = 0;
   void error(const std::string& text);  // an `error` message
+  // For an answer that comes later: empty once the client has left.
+  [[nodiscard]] virtual std::weak_ptr<Client> handle() = 0;
 };
 
 struct ServerHandlers {

@@ -9,6 +9,7 @@
 #include <boost/asio/io_context.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,8 @@ struct MonitorOptions {
   std::string event;                          // name or number; empty: the fastest periodic event
   dashboard::ServerOptions server;            // its own dashboard's, when `dashboard` is none
   dashboard::Dashboard* dashboard = nullptr;  // the owner's, which must outlive the monitor
+  // For its own dashboard: a simulated plant's control endpoint, so that the page may push and restart it.
+  std::optional<dashboard::PlantControlAddress> plant_control;
   int timeout_ms = 1000;
 };
 
