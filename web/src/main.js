@@ -6,6 +6,7 @@ import { installTestHooks, recordMessage } from './test_hooks.js';
 import { connectSignalFeed } from './signal_feed.js';
 import { createLinkIndicator } from './link_indicator.js';
 import { createTuningPage } from './tuning_page.js';
+import { createPlantControls } from './plant_controls.js';
 import { createScopePage } from './scope_page.js';
 import { createRecorderPage } from './recorder_page.js';
 import { createStatusPage } from './status_page.js';
@@ -37,5 +38,6 @@ const pages = {
   recorder: createRecorderPage({ hub, connection }),
   status: createStatusPage({ hub, connection }),
 };
+createPlantControls({ hub, connection, root: document.getElementById('plant-controls') });
 setUpTabs(pages, 'tuning');
 connection.open();

@@ -4,14 +4,17 @@
 //
 //   node tests/dashboard_e2e.mjs --url http://127.0.0.1:PORT/ --artefacts DIR
 //        [--parameter P --value 0.05] [--signal theta] [--trigger-level 0|auto] [--timeout-s 30] [--expect-tasks yes]
+//        [--plant push|none]
 //
+// --plant push: a simulated plant is behind the target; the Disturb box pushes it (a value out of limits is refused
+// on the page first) and restarts it, each answered with its model time. --plant none: the page shows no Disturb box.
 // Prints one JSON line of results; exits 0 when every check passed, 1 naming the failed step.
 import { mkdir } from 'node:fs/promises';
 import path from 'node:path';
 import { launchChromium, parseOptions, waitFor } from './browser.mjs';
 
-const usage = 'usage: dashboard_e2e.mjs --url URL --artefacts DIR [--parameter P] [--value V] [--signal NAME] [--trigger-level L|auto] [--timeout-s S] [--expect-tasks yes]';
-const options = parseOptions(process.argv.slice(2), { url: '', artefacts: '', parameter: 'P', value: '0.05', signal: 'theta', 'trigger-level': '0', 'timeout-s': '30', 'expect-tasks': 'no' }, usage);
+const usage = 'usage: dashboard_e2e.mjs --url URL --artefacts DIR [--parameter P] [--value V] [--signal NAME] [--trigger-level L|auto] [--timeout-s S] [--expect-tasks yes] [--plant push|none]';
+const options = parseOptions(process.argv.slice(2), { url: '', artefacts: '', parameter: 'P', value: '0.05', signal: 'theta', 'trigger-level': '0', 'timeout-s': '30', 'expect-tasks': 'no', plant: '' }, usage);
 if (!options.url || !options.artefacts) {
   console.error(usage);
   process.exit(2);
@@ -79,6 +82,11 @@ try {
   await targetReads(original);
   const target = await writeRequested();
   results.parameter_written = { name: options.parameter, requested, target: target.value, undone_to: original };
+  if (options.plant === 'push') results.plant = await disturbThePlant(page, timeoutMs);
+  if (options.plant === 'none') {
+    step = 'checking that no Disturb box is shown';
+    if (await page.isVisible('#plant-controls')) throw new Error('a Disturb box shows without a plant behind the target');
+  }
   await shot('tuning.png');
 
   step = `plotting ${options.signal} on the scope`;
@@ -170,6 +178,31 @@ try {
   console.error(`dashboard_e2e: failed ${step}: ${results.error}`);
   await browser.close();
   process.exit(1);
+}
+
+// The Disturb box: a push out of limits is refused on the page; a push and a restart are answered with the model time
+// they act from, the restart's no earlier than the push's.
+async function disturbThePlant(page, timeoutMs) {
+  step = 'showing the Disturb box';
+  await page.waitForSelector('#plant-controls:not([hidden]) [data-plant-action="push"]', { timeout: timeoutMs });
+  const applied = async (action, after) => {
+    await page.click(`[data-plant-action="${action}"]`);
+    return waitFor(`${action} to be applied`, timeoutMs, async () => {
+      const last = await page.$eval('#plant-last', (node) => ({ action: node.dataset.action, time: Number(node.dataset.timeS), text: node.textContent }));
+      return last.action === action && last.time > after ? last : null;
+    });
+  };
+  step = 'pushing with a force out of limits';
+  await page.fill('[data-plant-argument="push.force_n"]', '500');
+  await page.click('[data-plant-action="push"]');
+  const refused = await page.textContent('#plant-last');
+  if (!refused.includes('outside')) throw new Error(`a 500 N push was not refused on the page: "${refused}"`);
+  step = 'pushing the plant';
+  await page.fill('[data-plant-argument="push.force_n"]', '3');
+  const push = await applied('push', 0);
+  step = 'restarting the plant';
+  const restart = await applied('restart', push.time - 1e-9);
+  return { push_time_s: push.time, restart_time_s: restart.time, last: restart.text };
 }
 
 // The slider, as a user would leave it: value set, then input and change fired. When the value is

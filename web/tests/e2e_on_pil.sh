@@ -6,7 +6,7 @@
 #   bridge   the bridge's own dashboard (the application channel, theta at 100 Hz): after the P slider's write the
 #            value the firmware received (linux_gains[0]) is read over XCP through the bridge.
 # Either way the Status page must show the executive's task table (the application channel's account, or the
-# account in memory that duet monitor uploads).
+# account in memory that duet monitor uploads), and the Disturb box must push and restart the simulated robot.
 # Screenshots of every page go to ARTEFACTS. Prints "skipped: ..." (ctest's skip pattern) when something it needs is
 # not built.
 # Usage: e2e_on_pil.sh monitor|bridge DUET FIRMWARE A2L ARTEFACTS
@@ -41,8 +41,11 @@ children+=($!)
 xcp=$(address_in "$work/pil.out" 'tcp://127.0.0.1:[0-9]+')
 bridge_page=$(address_in "$work/pil.out" 'http://127.0.0.1:[0-9]+/')
 
+# The plant's control endpoint, which the bridge relays already and duet monitor is told of.
+plant_control=$(address_in "$work/pil.out" 'plant-control 127.0.0.1:[0-9]+' | cut -d' ' -f2)
+
 if [[ $backend == monitor ]]; then
-  "$duet" monitor --xcp "$xcp" --a2l "$a2l" --listen 127.0.0.1:0 --web "$web/dist" \
+  "$duet" monitor --xcp "$xcp" --a2l "$a2l" --listen 127.0.0.1:0 --web "$web/dist" --plant-control "$plant_control" \
     --signal theta --signal theta_rate --signal theta_acc --signal gyro_y --signal y --signal position \
     --signal speed --signal duty_percent >"$work/monitor.out" 2>&1 &
   children+=($!)
@@ -54,7 +57,7 @@ else
 fi
 
 node "$web/tests/dashboard_e2e.mjs" --url "$page" --artefacts "$artefacts" --parameter P --value "$value" \
-  --signal theta --trigger-level auto --timeout-s 40 --expect-tasks yes
+  --signal theta --trigger-level auto --timeout-s 40 --expect-tasks yes --plant push
 
 if [[ $backend == bridge ]]; then
   # What the firmware took from the application channel, read over XCP through the bridge.

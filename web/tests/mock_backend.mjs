@@ -3,9 +3,12 @@
 // serves dist/ over HTTP and speaks docs/DASHBOARD.md's protocol on a WebSocket at the same port.
 //
 //   node tests/mock_backend.mjs [--port 8765] [--host 127.0.0.1] [--mode samples|telemetry] [--rate 1000]
+//        [--plant yes|no]
 //
 // `samples` mode is `duet monitor` (1 kHz in 20 ms blocks); `telemetry` mode is `duet-bridge` (one
-// message per sample, 100 Hz unless --rate says otherwise). Prints `listening http://HOST:PORT/`.
+// message per sample, 100 Hz unless --rate says otherwise). With `--plant yes` (the default) a simulated plant is
+// behind the target, as under duet pil: the description has `plant`, and `plant` requests are answered. Prints
+// `listening http://HOST:PORT/`.
 import http from 'node:http';
 import path from 'node:path';
 import { parseArgs } from 'node:util';
@@ -14,6 +17,7 @@ import { WebSocketServer } from 'ws';
 import { description, initialParameters, sampleAt } from './mock/signals.mjs';
 import { MockRecorder } from './mock/recorder.mjs';
 import { staticFiles } from './mock/static_files.mjs';
+import { answerPlant, plantDescription } from './mock/plant.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const { values: options } = parseArgs({
@@ -22,6 +26,7 @@ const { values: options } = parseArgs({
     host: { type: 'string', default: '127.0.0.1' },
     mode: { type: 'string', default: 'samples' },
     rate: { type: 'string' },
+    plant: { type: 'string', default: 'yes' },
     dist: { type: 'string', default: path.join(here, '..', 'dist') },
   },
 });
@@ -35,6 +40,7 @@ const describedAs = {
   ...description,
   backend: options.mode === 'samples' ? 'monitor' : 'bridge',
   telemetry_period_us: Math.round(1e6 / rate),
+  ...(options.plant === 'yes' ? { plant: plantDescription } : {}),
 };
 const parameters = initialParameters();
 const recorder = new MockRecorder(
@@ -42,6 +48,7 @@ const recorder = new MockRecorder(
   30 * rate,
 );
 const counters = { samples: 0, messages_sent: 0, messages_dropped: 0, requests: 0, bad_requests: 0 };
+const plantCounters = { requests: 0, applied: 0, refused: 0 };
 
 const server = http.createServer(staticFiles(path.resolve(options.dist)));
 const sockets = new WebSocketServer({ server, maxPayload: 4096 });
@@ -96,6 +103,17 @@ const handlers = {
     const problem = recorder.arm(request);
     if (problem) return send(socket, { type: 'error', message: problem });
     broadcast(recorderMessage('armed'));
+  },
+  plant(socket, request) {
+    if (!describedAs.plant) return send(socket, { type: 'plant', error: 'no simulated plant behind this target (no --plant-control)' });
+    plantCounters.requests += 1;
+    const answer = answerPlant(request, sent / rate);
+    if (answer.error) {
+      plantCounters.refused += 1;
+      return send(socket, answer);
+    }
+    plantCounters.applied += 1;
+    broadcast(answer); // every page shows the last push
   },
   cancel_record() {
     recorder.cancel();
@@ -178,6 +196,7 @@ function statusMessage() {
     },
     daq: { odt_sent: sent * 2, odt_lost: 0, overruns: 0, queue_high_water: 3 },
     websocket: { clients: sockets.clients.size, ...counters },
+    ...(describedAs.plant ? { plant: { link: { state: 'open', address: 'mock' }, ...plantCounters } } : {}),
   };
 }
 setInterval(() => broadcast(statusMessage()), 1000);

@@ -10,15 +10,18 @@ import { runScript, startMock } from './start_mock.mjs';
 
 for (const mode of ['samples', 'telemetry']) {
   test(`dashboard end to end against the mock in ${mode} mode`, { timeout: 90000 }, async () => {
-    const mock = await startMock(['--mode', mode]);
+    // Under duet pil a plant is behind the target; the board's bridge has none.
+    const plant = mode === 'samples' ? 'yes' : 'no';
+    const mock = await startMock(['--mode', mode, '--plant', plant]);
     const artefacts = await mkdtemp(path.join(tmpdir(), `duet-e2e-${mode}-`));
     try {
-      const run = await runScript('dashboard_e2e.mjs', ['--url', mock.url, '--artefacts', artefacts, '--parameter', 'P', '--value', '0.05', '--signal', 'theta', '--trigger-level', '0', '--timeout-s', '30']);
+      const run = await runScript('dashboard_e2e.mjs', ['--url', mock.url, '--artefacts', artefacts, '--parameter', 'P', '--value', '0.05', '--signal', 'theta', '--trigger-level', '0', '--timeout-s', '30', '--plant', plant === 'yes' ? 'push' : 'none']);
       assert.equal(run.code, 0, `dashboard_e2e failed:\n${run.stdout}${run.stderr}`);
       const results = JSON.parse(run.stdout.trim().split('\n').pop());
       assert.equal(results.ok, true);
       assert.ok(Math.abs(results.parameter_written.target - 0.05) < 1e-6);
       assert.ok(results.samples > 0 && results.frames > 0 && results.captured > 0);
+      if (plant === 'yes') assert.ok(results.plant.restart_time_s >= results.plant.push_time_s, JSON.stringify(results.plant));
     } finally {
       mock.stop();
       await rm(artefacts, { recursive: true, force: true });
