@@ -1,5 +1,9 @@
 #include "plant_relay.hpp"
 
+#include <boost/asio/connect.hpp>
+#include <boost/asio/read_until.hpp>
+#include <boost/asio/write.hpp>
+
 namespace duet::dashboard {
 
 namespace asio = boost::asio;
@@ -132,14 +136,15 @@ void PlantRelay::retry() {
 
 void PlantRelay::request(Client& client, const json& request) {
   ++requests_;
-  const json action = request.contains("action") ? request["action"] : json{};
+  const std::string action =
+      request.contains("action") && request["action"].is_string() ? request["action"].get<std::string>() : "";
   if (!connected_ || !description_) {
     ++unreachable_;
     return refuse(client.handle(), action,
                   "the plant is not reachable at " + address_.host + ":" + std::to_string(address_.port) +
                       (problem_.empty() ? std::string{} : " (" + problem_ + ")"));
   }
-  if (!action.is_string()) {
+  if (action.empty()) {
     ++refused_;
     std::string names;
     for (const json& offered : (*description_)["actions"]) {
@@ -150,8 +155,9 @@ void PlantRelay::request(Client& client, const json& request) {
   const std::uint64_t id = next_id_++;
   json relayed = request;
   relayed["id"] = id;
-  Pending& pending = pending_[id];
-  pending = {client.handle(), action, std::make_unique<asio::steady_timer>(io_, answer_within)};
+  Pending& pending =
+      pending_.emplace(id, Pending{client.handle(), action, std::make_unique<asio::steady_timer>(io_, answer_within)})
+          .first->second;
   pending.timer->async_wait([this, id](error_code error) {
     if (error) return;
     const auto found = pending_.find(id);
@@ -175,11 +181,11 @@ void PlantRelay::write() {
   });
 }
 
-void PlantRelay::refuse(const std::weak_ptr<Client>& client, const json& action, const std::string& problem) {
+void PlantRelay::refuse(const std::weak_ptr<Client>& client, const std::string& action, const std::string& problem) {
   const std::shared_ptr<Client> asker = client.lock();
   if (!asker) return;
   json message = {{"type", "plant"}, {"error", problem}};
-  if (action.is_string()) message["action"] = action;
+  if (!action.empty()) message["action"] = action;
   asker->send(dashboard::message(message), Delivery::always);
 }
 

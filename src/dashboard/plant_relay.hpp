@@ -5,7 +5,9 @@
 // relays the page's `plant` requests to it and its answers back: applied ones to every client, refusals to the one
 // that asked. Shared by both back ends through Dashboard. Runs on the dashboard's io_context.
 
-#include <boost/asio.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/ip/tcp.hpp>
+#include <boost/asio/steady_timer.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -43,7 +45,7 @@ class PlantRelay {
  private:
   struct Pending {
     std::weak_ptr<Client> client;
-    nlohmann::json action;
+    std::string action;  // as asked for, for the refusal
     std::unique_ptr<boost::asio::steady_timer> timer;
   };
 
@@ -53,7 +55,7 @@ class PlantRelay {
   void lost(const std::string& problem);
   void retry();
   void write();
-  void refuse(const std::weak_ptr<Client>& client, const nlohmann::json& action, const std::string& problem);
+  void refuse(const std::weak_ptr<Client>& client, const std::string& action, const std::string& problem);
 
   boost::asio::io_context& io_;
   PlantControlAddress address_;

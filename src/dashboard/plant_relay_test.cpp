@@ -1,7 +1,8 @@
 // The dashboard's relay to a simulated plant: its description's `plant` member while the plant-control endpoint is
 // reachable, requests relayed and answered with the model time, refusals to the asker only, an endpoint that is not
 // there or goes away, and a back end without one.
-#include <boost/asio.hpp>
+#include <boost/asio/io_context.hpp>
+#include <boost/asio/post.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 

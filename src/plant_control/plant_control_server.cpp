@@ -74,8 +74,8 @@ class PlantControlServer::Impl : public std::enable_shared_from_this<Impl> {
  private:
   struct Waiting {
     std::weak_ptr<Connection> asker;
-    json action;
-    json id;  // the asker's, given back with its answer
+    std::string action;
+    std::string id;  // the asker's, as JSON text, given back with its answer; empty: none
     std::unique_ptr<asio::steady_timer> timer;
   };
   // The asker's answer: `message` with its id.
@@ -197,6 +197,7 @@ void PlantControlServer::Impl::handle(const std::shared_ptr<Connection>& connect
   };
   auto disturbance = read_request(request, controls_.offered());
   if (!disturbance) return refuse(disturbance.error());
+  const std::string disturbance_name = disturbance.value().name;
   // The answer comes from the plant's thread, possibly when this server is gone: only a live server takes it, on its
   // own thread, where the ticket is known by then.
   auto ticket_box = std::make_shared<plant::PlantControls::Ticket>(0);
@@ -212,8 +213,11 @@ void PlantControlServer::Impl::handle(const std::shared_ptr<Connection>& connect
                                   });
   if (!ticket) return refuse(ticket.error());
   *ticket_box = ticket.value();
-  Waiting& waiting = waiting_[ticket.value()];
-  waiting = {connection, request["action"], id, std::make_unique<asio::steady_timer>(io_, options_.apply_within)};
+  Waiting& waiting =
+      waiting_
+          .emplace(ticket.value(), Waiting{connection, disturbance_name, id.is_null() ? std::string{} : id.dump(),
+                                           std::make_unique<asio::steady_timer>(io_, options_.apply_within)})
+          .first->second;
   waiting.timer->async_wait([weak, number = ticket.value()](error_code error) {
     if (error) return;
     if (const std::shared_ptr<Impl> alive = weak.lock()) alive->give_up(number);
@@ -249,7 +253,7 @@ void PlantControlServer::Impl::give_up(plant::PlantControls::Ticket ticket) {
 void PlantControlServer::Impl::tell(const Waiting& waiting, json message) {
   const std::shared_ptr<Connection> asker = waiting.asker.lock();
   if (!asker) return;
-  if (!waiting.id.is_null()) message["id"] = waiting.id;
+  if (!waiting.id.empty()) message["id"] = json::parse(waiting.id);
   asker->send(message);
 }
 

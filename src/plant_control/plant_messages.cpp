@@ -43,6 +43,7 @@ json description_message(const std::string& plant, const std::vector<plant::Dist
 
 Result<plant::Disturbance> read_request(const json& request, const std::vector<plant::DisturbanceKind>& offered) {
   std::vector<std::string> known;
+  known.reserve(offered.size());
   for (const plant::DisturbanceKind& kind : offered) known.push_back(kind.name);
   if (!request.contains("action") || !request["action"].is_string()) {
     return Failure{"a plant request needs \"action\": " + names_of(known)};
@@ -51,11 +52,14 @@ Result<plant::Disturbance> read_request(const json& request, const std::vector<p
   const plant::DisturbanceKind* kind = kind_named(offered, name);
   if (kind == nullptr) return Failure{"unknown action '" + name + "': " + names_of(known)};
   std::vector<std::string> takes;
+  takes.reserve(kind->arguments.size());
   for (const plant::DisturbanceArgument& argument : kind->arguments) takes.push_back(argument.name);
   for (const auto& [member, value] : request.items()) {
     if (!is_envelope(member) && std::find(takes.begin(), takes.end(), member) == takes.end()) {
-      return Failure{name + " takes no argument '" + member + "'" +
-                     (takes.empty() ? std::string{" (it takes none)"} : " (" + names_of(takes) + ")")};
+      std::string problem = name + " takes no argument '";
+      problem += member;
+      problem += takes.empty() ? "' (it takes none)" : "' (" + names_of(takes) + ")";
+      return Failure{problem};
     }
   }
   plant::Disturbance disturbance{name, {}};
