@@ -80,13 +80,13 @@ static_assert(offsetof(Signals, gains_from_linux) == 360, "the A2L's layout");
 static_assert(sizeof(Signals) == 364);
 
 Parameters parameters{
-    .P = 0.0196F,
-    .I = 0.0F,
-    .D = 0.0187F,
+    .P = 0.3F,
+    .I = 8.0F,
+    .D = 0.06F,
     .N = 28.234F,
     .target = 0.0F,
     .stop_angle = 60.0F,
-    .use_lqr = true,
+    .use_lqr = false,
     .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
     .kalman_A = {1.0F, 0.001F, 0.0F, 1.0F},
     .kalman_C = {1.0F, 0.0F, 0.0F, 1.0F},
@@ -95,13 +95,13 @@ Parameters parameters{
     .kalman_R = {0.8F, 0.0F, 0.0F, 0.00033F},
 };
 const Parameters reference_parameters{
-    .P = 0.0196F,
-    .I = 0.0F,
-    .D = 0.0187F,
+    .P = 0.3F,
+    .I = 8.0F,
+    .D = 0.06F,
     .N = 28.234F,
     .target = 0.0F,
     .stop_angle = 60.0F,
-    .use_lqr = true,
+    .use_lqr = false,
     .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
     .kalman_A = {1.0F, 0.001F, 0.0F, 1.0F},
     .kalman_C = {1.0F, 0.0F, 0.0F, 1.0F},
@@ -371,7 +371,7 @@ void step_rate_1() {
   float d_gain{};
   d_gain = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from_linux), d_linux, p.D);
   // controller (DiscretePid)
-  signals.y_pid = state.controller.output(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F});
+  signals.y_pid = state.controller.output(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F}, signals.stop);
   // choose (Switch)
   float y_chosen{};
   y_chosen = duet::blocks::select(duet::blocks::convert<bool>(p.use_lqr), signals.y_lqr, signals.y_pid);
@@ -404,7 +404,7 @@ void step_rate_1() {
   if (duet::blocks::convert<bool>(signals.sensor_ready)) {
     state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q);
   }
-  state.controller.update_clamped(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F}, 0.001F);
+  state.controller.update_clamped(signals.error, {p_gain, i_gain, d_gain, p.N, -1.0F, 1.0F}, 0.001F, signals.stop);
   state.velocity.update(signals.position, 1.0F, 20.0F, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();
