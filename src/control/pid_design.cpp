@@ -161,17 +161,16 @@ Result<PidDesign> design_pid(const PidLoop& loop, const PidCriterion& criterion)
   const Point high{std::log(1.0), std::log(100.0), std::log(0.1)};
   Point best = low;
   double best_cost = cost(best);
-  for (double p = 0; p < steps; ++p) {
-    for (double i = 0; i < steps; ++i) {
-      for (double d = 0; d < steps; ++d) {
-        const Point fraction = Point{p, i, d} / (steps - 1);
-        const Point point = low + fraction.cwiseProduct(high - low);
-        const double value = cost(point);
-        if (value < best_cost) {
-          best_cost = value;
-          best = point;
-        }
-      }
+  for (int k = 0; k < steps * steps * steps; ++k) {
+    const int p = k / (steps * steps);  // the grid's indices: P, I, D
+    const int i = k / steps % steps;
+    const int d = k % steps;
+    const Point index{static_cast<double>(p), static_cast<double>(i), static_cast<double>(d)};
+    const Point point = low + (index / (steps - 1)).cwiseProduct(high - low);
+    const double value = cost(point);
+    if (value < best_cost) {
+      best_cost = value;
+      best = point;
     }
   }
   // Nelder-Mead from the best grid point, a simplex of a grid step's size.
@@ -213,7 +212,7 @@ Result<PidDesign> design_pid(const PidLoop& loop, const PidCriterion& criterion)
       }
     }
   }
-  const std::size_t index = static_cast<std::size_t>(std::min_element(values.begin(), values.end()) - values.begin());
+  const auto index = static_cast<std::size_t>(std::min_element(values.begin(), values.end()) - values.begin());
   const PidLoopGains gains = gains_at(simplex[index], criterion.n);
   PidEvaluation evaluation = evaluate_pid(loop, criterion, gains);
   if (!evaluation.within_limits) {
