@@ -45,8 +45,8 @@ if [[ -z $ready ]] || ! kill -0 $run 2>/dev/null; then
   exit 1
 fi
 
-# The LQR is the default; the thesis' PID drives the motors only when use_lqr is 0.
-"$duet" xcp write use_lqr=0 --a2l "$a2l" --connect "tcp://$xcp"
+# The thesis' gains (I = 0): the shipped I would wind the held robot's duty up to its limit and keep it there.
+"$duet" xcp write P=0.0196 I=0 D=0.0187 --a2l "$a2l" --connect "tcp://$xcp"
 # One session records and tunes: the bridge, like XCP, serves one master at a time. The writes happen at 3 and 6 s
 # of the PC's clock; the recording's time is the firmware's (DAQ timestamps).
 "$duet" xcp record --a2l "$a2l" --connect "tcp://$xcp" --signal theta --signal y --signal P --signal D \

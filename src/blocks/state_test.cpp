@@ -124,6 +124,32 @@ TEST(BlocksDiscretePid, HandComputedStepsWithSaturation) {
   EXPECT_EQ(pid.filter, 0.0);
 }
 
+TEST(BlocksDiscretePid, AResetStepIsAtRestAndTheNextStartsFromRest) {
+  // The gains of HandComputedStepsWithSaturation. The PID has run two steps (F = 0.25, I = 1.5), then a reset step
+  // with e = -1: the output is that of a PID at rest, P e + N (D e - 0) = -2 - 2 = -4, and afterwards both states are
+  // 0 (update() and update_clamped() alike). The next step, e = 1 without reset, is the first step from rest: 4.
+  const PidGains<double> gains{.p = 2.0, .i = 4.0, .d = 0.5, .n = 4.0, .lower = -5.0, .upper = 5.0};
+  for (const bool clamped : {false, true}) {
+    DiscretePid<double> pid{0.0, 0.0};
+    for (const double error : {1.0, 0.5}) {
+      EXPECT_NE(pid.output(error, gains, false), 0.0);
+      pid.update(error, gains, 0.25, false);
+    }
+    EXPECT_EQ(pid.integrator, 1.5);
+    EXPECT_EQ(pid.filter, 0.25);
+    EXPECT_EQ(pid.output(-1.0, gains, true), -4.0);
+    EXPECT_EQ(pid.output(-1.0, gains, false), -2.0 + 1.5 + 4.0 * (-0.5 - 0.25));  // what it gives without the reset
+    if (clamped) {
+      pid.update_clamped(-1.0, gains, 0.25, true);
+    } else {
+      pid.update(-1.0, gains, 0.25, true);
+    }
+    EXPECT_EQ(pid.integrator, 0.0);
+    EXPECT_EQ(pid.filter, 0.0);
+    EXPECT_EQ(pid.output(1.0, gains, false), 4.0);  // step 0 of HandComputedStepsWithSaturation
+  }
+}
+
 // The formulas of state.hpp written as plain expressions (C++ evaluates a * b * c as (a * b) * c and a + b + c as
 // (a + b) + c; the test compiles without contraction, like duet_blocks' users). It also counts the steps where another
 // order of evaluation would have given another output or integrator: where there are some, the comparison pins the

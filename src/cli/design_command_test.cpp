@@ -113,6 +113,29 @@ TEST(DesignCommand, TheThesisKalmanFilter) {
   EXPECT_LT(l[0][0], 1e-3) << outcome.out;          // the accelerometer's noisy tilt only slowly
 }
 
+TEST(DesignCommand, TheRobotsPid) {
+  const Outcome outcome = run({"design", "pid", example("balbot_pid.yaml")});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  EXPECT_NE(outcome.out.find("\n# slowest mode counted: time constant 0.063"), std::string::npos) << outcome.out;
+  EXPECT_NE(outcome.out.find("\nN: {value: 28.234, type: single}\n"), std::string::npos) << outcome.out;
+  for (const char* gain : {"\nP: {value: 0.", "\nI: {value: ", "\nD: {value: 0."}) {
+    EXPECT_NE(outcome.out.find(gain), std::string::npos) << gain;
+  }
+}
+
+TEST(DesignCommand, ThePidsModesForGivenGains) {
+  const Outcome thesis = run({"design", "pid", example("balbot_pid.yaml"), "--gains", "0.0196", "0", "0.0187"});
+  ASSERT_EQ(thesis.exit_code, ExitCode::success) << thesis.err;
+  EXPECT_NE(thesis.out.find("\n# unstable: the largest mode grows e-fold every 0.412 s\n"), std::string::npos)
+      << thesis.out;
+  const Outcome shipped = run({"design", "pid", example("balbot_pid.yaml"), "--gains", "0.3", "8", "0.06"});
+  EXPECT_NE(shipped.out.find("\n# slowest mode counted: time constant 0.269 s (the filter's mode, time constant 273 s, "
+                             "left out)\n# outside the criterion's limits\n"),
+            std::string::npos)
+      << shipped.out;
+}
+
 TEST(DesignCommand, BadSpecsSayWhereAndWhy) {
   const SpecFile missing{"A: [[1, 1], [0, 1]]\nB: [[0], [1]]\nR: 1\n"};
   const Outcome no_q = run({"design", "lqr", missing.path()});

@@ -274,6 +274,8 @@ std::optional<Failure> read_weights(const SpecReader& reader, const YAML::Node& 
   return std::nullopt;
 }
 
+std::optional<Failure> read_type(const SpecReader& reader, const YAML::Node& root, std::string& type);
+
 Result<DesignSpec> read_spec(const SpecReader& reader, const YAML::Node& root, DesignKind kind) {
   const bool regulator = kind == DesignKind::regulator;
   const auto unknown =
@@ -319,9 +321,61 @@ Result<DesignSpec> read_spec(const SpecReader& reader, const YAML::Node& root, D
   return spec;
 }
 
-}  // namespace
+// The printed parameters' type.
+std::optional<Failure> read_type(const SpecReader& reader, const YAML::Node& root, std::string& type) {
+  if (const YAML::Node node = root["type"]) {
+    if (!node.IsScalar() || (node.Scalar() != "single" && node.Scalar() != "double")) {
+      return reader.at(node, "type: expected single or double");
+    }
+    type = node.Scalar();
+  }
+  return std::nullopt;
+}
 
-Result<DesignSpec> parse_design_spec(std::string_view text, const std::string& file, DesignKind kind) {
+Result<PidDesignSpec> read_pid_spec(const SpecReader& reader, const YAML::Node& root) {
+  if (auto unknown = reader.only(root, "",
+                                 {"balbot", "period_s", "input_delay_s", "sensor_height_m", "kalman_Q", "kalman_R", "N",
+                                  "minimum_damping", "maximum_high_frequency_gain", "type"})) {
+    return *unknown;
+  }
+  PidDesignSpec spec;
+  const YAML::Node balbot = root["balbot"];
+  if (!balbot) return reader.at(root, "'balbot' is missing (the robot's parameters, or {} for the defaults)");
+  auto robot = read_balbot(reader, balbot);
+  if (!robot) return Failure{robot.error()};
+  spec.loop.robot = robot.value();
+  spec.model_place = reader.place(balbot);
+  const std::pair<const char*, double*> numbers[] = {
+      {"period_s", &spec.loop.period_s},
+      {"input_delay_s", &spec.loop.input_delay_s},
+      {"sensor_height_m", &spec.loop.sensor_height_m},
+      {"kalman_Q", &spec.loop.kalman_q},
+      {"N", &spec.criterion.n},
+      {"minimum_damping", &spec.criterion.minimum_damping},
+      {"maximum_high_frequency_gain", &spec.criterion.maximum_high_frequency_gain}};
+  for (const auto& [key, target] : numbers) {
+    if (!root[key]) continue;
+    auto value = reader.number(root[key], key);
+    if (!value) return Failure{value.error()};
+    *target = value.value();
+  }
+  if (const YAML::Node node = root["kalman_R"]) {
+    auto r = reader.matrix(node, "kalman_R");
+    if (!r) return Failure{r.error()};
+    if (r.value().rows() != 2 || r.value().cols() != 2) {
+      return reader.at(node, "kalman_R must be 2x2 (the tilt's and the rate's noise); it is " + size_text(r.value()));
+    }
+    spec.loop.kalman_r = r.value();
+  }
+  if (spec.criterion.n <= 0) return reader.at(root["N"], "N: the derivative filter's coefficient must be above 0");
+  if (auto problem = read_type(reader, root, spec.type)) return *problem;
+  return spec;
+}
+
+// The file's text as a YAML map, read by `read`; YAML's own errors as "file:line:column: what".
+template <typename Read>
+auto parse_map(std::string_view text, const std::string& file, const std::string& expected, Read read)
+    -> decltype(read(SpecReader{file}, YAML::Node{})) {
   YAML::Node root;
   try {
     root = YAML::Load(std::string{text});
@@ -329,19 +383,36 @@ Result<DesignSpec> parse_design_spec(std::string_view text, const std::string& f
     return Failure{file + ":" + std::to_string(error.mark.line + 1) + ":" + std::to_string(error.mark.column + 1) +
                    ": not YAML: " + error.msg};
   }
-  const char* expected = kind == DesignKind::regulator ? "A, B, Q and R" : "A, C, G, Q and R";
-  if (!root.IsMap()) return Failure{file + ": expected a map of matrices: " + expected + " (docs/CLI.md)"};
+  if (!root.IsMap()) return Failure{file + ": expected a map of " + expected + " (docs/CLI.md)"};
   try {
-    return read_spec(SpecReader{file}, root, kind);
+    return read(SpecReader{file}, root);
   } catch (const YAML::Exception& error) {  // a key that is not a scalar, and the like
     return Failure{file + ":" + std::to_string(error.mark.line + 1) + ": " + error.msg};
   }
+}
+
+}  // namespace
+
+Result<DesignSpec> parse_design_spec(std::string_view text, const std::string& file, DesignKind kind) {
+  const char* expected = kind == DesignKind::regulator ? "matrices: A, B, Q and R" : "matrices: A, C, G, Q and R";
+  return parse_map(text, file, expected,
+                   [kind](const SpecReader& reader, const YAML::Node& root) { return read_spec(reader, root, kind); });
 }
 
 Result<DesignSpec> load_design_spec(const std::string& path, DesignKind kind) {
   auto text = read_text_file(path);
   if (!text) return Failure{text.error()};
   return parse_design_spec(text.value(), path, kind);
+}
+
+Result<PidDesignSpec> parse_pid_design_spec(std::string_view text, const std::string& file) {
+  return parse_map(text, file, "the robot's and the loop's parameters: balbot, period_s, ...", read_pid_spec);
+}
+
+Result<PidDesignSpec> load_pid_design_spec(const std::string& path) {
+  auto text = read_text_file(path);
+  if (!text) return Failure{text.error()};
+  return parse_pid_design_spec(text.value(), path);
 }
 
 }  // namespace duet::control

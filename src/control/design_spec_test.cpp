@@ -113,5 +113,41 @@ TEST(DesignSpec, ErrorsSayWhereAndWhat) {
   EXPECT_EQ(load_design_spec("/nonexistent.yaml", DesignKind::regulator).error(), "/nonexistent.yaml: cannot open");
 }
 
+TEST(DesignSpec, ThePidsLoopAndCriterion) {
+  auto spec = parse_pid_design_spec(
+      "balbot: {volts_per_input: 7.4}\ninput_delay_s: 0.0005\nsensor_height_m: 0.075\nkalman_Q: 4\n"
+      "kalman_R: {diagonal: [1, 0.001]}\nN: 50\nminimum_damping: 0.7\nmaximum_high_frequency_gain: 2\ntype: double\n",
+      "s.yaml");
+  ASSERT_TRUE(spec) << spec.error();
+  const PidDesignSpec& pid = spec.value();
+  EXPECT_EQ(pid.loop.robot.volts_per_input, 7.4);
+  EXPECT_EQ(pid.loop.period_s, 0.001);  // the default
+  EXPECT_EQ(pid.loop.input_delay_s, 0.0005);
+  EXPECT_EQ(pid.loop.sensor_height_m, 0.075);
+  EXPECT_EQ(pid.loop.kalman_q, 4);
+  EXPECT_EQ(pid.loop.kalman_r(1, 1), 0.001);
+  EXPECT_EQ(pid.criterion.n, 50);
+  EXPECT_EQ(pid.criterion.minimum_damping, 0.7);
+  EXPECT_EQ(pid.criterion.maximum_high_frequency_gain, 2);
+  EXPECT_EQ(pid.type, "double");
+  EXPECT_EQ(pid.model_place, "s.yaml:1:9");
+}
+
+TEST(DesignSpec, PidErrorsSayWhereAndWhat) {
+  const auto error_of_pid = [](std::string_view text) {
+    auto spec = parse_pid_design_spec(text, "s.yaml");
+    return spec ? std::string{} : spec.error();
+  };
+  EXPECT_EQ(error_of_pid("period_s: 0.001\n"),
+            "s.yaml:1:1: 'balbot' is missing (the robot's parameters, or {} for the defaults)");
+  EXPECT_EQ(error_of_pid("balbot: {}\nQ: 1\n").rfind("s.yaml:2:1: unknown field 'Q' (known: balbot, period_s", 0), 0U);
+  EXPECT_EQ(error_of_pid("balbot: {}\nkalman_R: 1\n"),
+            "s.yaml:2:11: kalman_R must be 2x2 (the tilt's and the rate's noise); it is 1x1");
+  EXPECT_EQ(error_of_pid("balbot: {}\nN: 0\n"), "s.yaml:2:4: N: the derivative filter's coefficient must be above 0");
+  EXPECT_EQ(error_of_pid("balbot: {}\nN: x\n"), "s.yaml:2:4: N: expected a number, got 'x'");
+  EXPECT_EQ(error_of_pid("- 1\n"),
+            "s.yaml: expected a map of the robot's and the loop's parameters: balbot, period_s, ... (docs/CLI.md)");
+}
+
 }  // namespace
 }  // namespace duet::control

@@ -60,7 +60,8 @@ const std::vector<BlockType> table{
       {"initial", false},
       {"covariance", false}}},
     {"StateFeedback", {"x"}, {"y"}, {{"k"}}},
-    // Its gains P, I, D are parameters, or inputs (Simulink's external gains) where those are connected.
+    // Its gains P, I, D are parameters, or inputs (Simulink's external gains) where those are connected; reset, where
+    // connected, holds it at rest while true (Simulink's external reset, level).
     {"DiscretePid",
      {"error"},
      {"y"},
@@ -74,7 +75,7 @@ const std::vector<BlockType> table{
      true,
      false,
      false,
-     {"p", "i", "d"}},
+     {"p", "i", "d", "reset"}},
     {"MatrixMultiply", {"a", "b"}, {"y"}, {}},
     {"EdgeDetect", {"u"}, {"y"}, {{"edge"}}, true},
     {"RateTransition", {"u"}, {"y"}, {{"mode", false}, {"initial", false}}, false},

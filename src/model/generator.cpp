@@ -486,7 +486,7 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
                   pid_gain(block, "i", t) + ", " + pid_gain(block, "d", t) + ", " +
                   argument(block, "n", pid_default_filter, t, "i") + ", " +
                   argument(block, "lower", -infinity, t, "i") + ", " + argument(block, "upper", infinity, t, "i") +
-                  "})");
+                  "}" + pid_reset(block) + ")");
   }
   return "  #error \"duet gen: block type " + type + " is not generated yet\"\n";
 }
@@ -528,7 +528,7 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
                            pid_gain(block, "i", t) + ", " + pid_gain(block, "d", t) + ", " +
                            argument(block, "n", pid_default_filter, t, "i") + ", " +
                            argument(block, "lower", -infinity, t, "i") + ", " +
-                           argument(block, "upper", infinity, t, "i") + "}, " + period + ");");
+                           argument(block, "upper", infinity, t, "i") + "}, " + period + pid_reset(block) + ");");
   }
   return {};
 }
@@ -536,6 +536,11 @@ std::string Generator::update_statements(const ProgramBlock& block) const {
 std::string Generator::pid_gain(const ProgramBlock& block, const std::string& name, DataType type) const {
   if (const auto k = input_of(block, name)) return element(block.inputs[*k], "i");  // an external gain
   return argument(block, name, 0, type, "i");
+}
+
+std::string Generator::pid_reset(const ProgramBlock& block) const {
+  if (const auto k = input_of(block, "reset")) return ", " + element(block.inputs[*k], "i");
+  return {};  // without the argument: the overloads without a reset
 }
 
 std::string Generator::source_output(const ProgramBlock& block) const {

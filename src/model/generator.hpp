@@ -74,6 +74,8 @@ class Generator {
   [[nodiscard]] std::string source_output(const ProgramBlock& block) const;
   // A DiscretePid's gain: its input where connected, else its parameter.
   [[nodiscard]] std::string pid_gain(const ProgramBlock& block, const std::string& name, DataType type) const;
+  // A DiscretePid's external reset as a further argument (", signal"), or nothing when it is not connected.
+  [[nodiscard]] std::string pid_reset(const ProgramBlock& block) const;
   [[nodiscard]] std::string bytes_output(const ProgramBlock& block) const;
   // A block parameter as a `const T*`: a tunable parameter's array, or the block's constant array of the literal.
   [[nodiscard]] std::string array_argument(const ProgramBlock& block, const std::string& name, DataType type) const;

@@ -430,15 +430,20 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
     const auto gains_of = [gains](std::size_t i) {
       return blocks::PidGains<T>{gains[0][i], gains[1][i], gains[2][i], gains[3][i], gains[4][i], gains[5][i]};
     };
-    return {{[states, y, u, gains_of] {
-               for (std::size_t i = 0; i < states->size(); ++i) y[i] = (*states)[i].output(u[i], gains_of(i));
+    // Unconnected, the external reset is a literal false.
+    const auto reset_input = input_of(block, "reset");
+    const Operand<bool> reset = reset_input ? c.input<bool>(block, *reset_input) : c.argument<bool>(block, "", 0);
+    return {{[states, y, u, gains_of, reset] {
+               for (std::size_t i = 0; i < states->size(); ++i) {
+                 y[i] = (*states)[i].output(u[i], gains_of(i), reset[i]);
+               }
              },
-             [states, u, gains_of, period, clamping] {
+             [states, u, gains_of, period, clamping, reset] {
                for (std::size_t i = 0; i < states->size(); ++i) {
                  if (clamping) {
-                   (*states)[i].update_clamped(u[i], gains_of(i), period);
+                   (*states)[i].update_clamped(u[i], gains_of(i), period, reset[i]);
                  } else {
-                   (*states)[i].update(u[i], gains_of(i), period);
+                   (*states)[i].update(u[i], gains_of(i), period, reset[i]);
                  }
                }
              }},

@@ -451,6 +451,35 @@ TEST(SimulationBlocks, DiscretePidAsTheBlockLibrarySteppedByHand) {
   }
 }
 
+TEST(SimulationBlocks, DiscretePidRestsWhileItsResetIsTrue) {
+  // The reset is true at counts 2 and 3 (of 0..5): the interpreter follows the block library's overloads with reset,
+  // and after the reset the PID starts from rest, unlike one without it.
+  const Built built{
+      "  - {name: count, type: Counter, parameters: {limit: 5}, outputs: {y: n}}\n"
+      "  - {name: e, type: Lookup, parameters: {table: E}, inputs: {index: n}, outputs: {y: e}}\n"
+      "  - {name: late, type: Compare, parameters: {operator: \">=\", value: 2}, inputs: {u: n}, outputs: {y: a}}\n"
+      "  - {name: early, type: Compare, parameters: {operator: \"<=\", value: 3}, inputs: {u: n}, outputs: {y: b}}\n"
+      "  - {name: both, type: Logic, parameters: {operator: AND}, inputs: {u1: a, u2: b}, outputs: {y: r}}\n"
+      "  - {name: pid, type: DiscretePid, parameters: {p: 1.5, i: 0.7, d: 0.05, n: 20, lower: -2, upper: 2.5,"
+      " anti_windup: clamping}, inputs: {error: e, reset: r}, outputs: {y: u}}\n"
+      "  - {name: free, type: DiscretePid, parameters: {p: 1.5, i: 0.7, d: 0.05, n: 20, lower: -2, upper: 2.5,"
+      " anti_windup: clamping}, inputs: {error: e}, outputs: {y: v}}\n",
+      "parameters:\n  E: {value: [1, 0.8, 0.3, -0.4, -1.1, 0.1], type: single}\n", 10000};
+  const auto columns = run(built, {"u", "v"}, 12);
+  const std::vector<float> errors{1.0F, 0.8F, 0.3F, -0.4F, -1.1F, 0.1F};
+  const auto ts = static_cast<float>(built.program().blocks[5].period_s);
+  const blocks::PidGains<float> gains{1.5F, 0.7F, 0.05F, 20.0F, -2.0F, 2.5F};
+  blocks::DiscretePid<float> pid{0, 0};
+  for (std::size_t k = 0; k < 12; ++k) {
+    const std::size_t count = k % 6;
+    const float error = errors[count];
+    const bool reset = count >= 2 && count <= 3;
+    EXPECT_EQ(columns.at("u")[k], static_cast<double>(pid.output(error, gains, reset))) << k;
+    pid.update_clamped(error, gains, ts, reset);
+  }
+  EXPECT_NE(columns.at("u"), columns.at("v"));  // the same PID without the reset
+}
+
 TEST(SimulationBlocks, MatrixMultiplyAsTheBlockLibrary) {
   const Built built{std::string{ramp} +
                     "  - {name: a, type: Constant, parameters: {value: [[0.1, 0.2], [-0.3, 0.7]]}, outputs: {y: a}}\n"

@@ -400,8 +400,17 @@ class BlockCheck {
     }
   }
 
-  // A DiscretePid's gain comes from its input or its parameter, and an input gain is of the error's type.
+  // A DiscretePid's gain comes from its input or its parameter, and an input gain is of the error's type; its reset
+  // is a boolean.
   void external_gains() {
+    if (const auto k = input_of(block_, "reset")) {
+      const SignalType& reset = input_type(*k);
+      if (reset.type != DataType::boolean || (!reset.shape.empty() && reset.shape != input_type(0).shape)) {
+        error(input_location(*k),
+              "type mismatch: " + input(*k) + " of " + name_ + " is " + describe(reset) + ", but a reset is boolean",
+              "give one boolean, or one per element of the error (Compare gives a boolean)");
+      }
+    }
     for (const char* name : {"p", "i", "d"}) {
       const auto k = input_of(block_, name);
       if (!k) continue;

@@ -315,6 +315,11 @@ const Case cases[] = {
      "  - {name: a, type: DiscretePid, inputs: {error: x, p: gain}, outputs: {y: y}}\n",
      "m.yaml:7:53: error: type mismatch: input 'p' (signal 'gain') of block 'a' (DiscretePid) is single, but input "
      "'error' (signal 'x') is double (a gain is one value, or one per element, of the error's type)\n"},
+    {"pid_reset_not_boolean", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: a, type: DiscretePid, parameters: {p: 2}, inputs: {error: x, reset: x}, outputs: {y: y}}\n",
+     "m.yaml:6:73: error: type mismatch: input 'reset' (signal 'x') of block 'a' (DiscretePid) is double, but a reset "
+     "is boolean (give one boolean, or one per element of the error (Compare gives a boolean))\n"},
 };
 
 class Mistyped : public ::testing::TestWithParam<Case> {};

@@ -89,13 +89,13 @@ static_assert(offsetof(Signals, linux_gains) == 396, "the A2L's layout");
 static_assert(sizeof(Signals) == 408);
 
 Parameters parameters{
-    .P = 0.0196F,
-    .I = 0.0F,
-    .D = 0.0187F,
+    .P = 0.3F,
+    .I = 8.0F,
+    .D = 0.06F,
     .N = 28.234F,
     .target = 0.0F,
     .stop_angle = 60.0F,
-    .use_lqr = true,
+    .use_lqr = false,
     .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
     .kalman_A = {1.0F, 0.001F, 0.0F, 1.0F},
     .kalman_C = {1.0F, 0.0F, 0.0F, 1.0F},
@@ -104,13 +104,13 @@ Parameters parameters{
     .kalman_R = {0.8F, 0.0F, 0.0F, 0.00033F},
 };
 const Parameters reference_parameters{
-    .P = 0.0196F,
-    .I = 0.0F,
-    .D = 0.0187F,
+    .P = 0.3F,
+    .I = 8.0F,
+    .D = 0.06F,
     .N = 28.234F,
     .target = 0.0F,
     .stop_angle = 60.0F,
-    .use_lqr = true,
+    .use_lqr = false,
     .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
     .kalman_A = {1.0F, 0.001F, 0.0F, 1.0F},
     .kalman_C = {1.0F, 0.0F, 0.0F, 1.0F},
@@ -442,7 +442,7 @@ void step_rate_1() {
   // lqr_in_use (Switch)
   signals.controller = duet::blocks::select(duet::blocks::convert<bool>(signals.gains_from), lqr_linux, p.use_lqr);
   // controller (DiscretePid)
-  signals.y_pid = state.controller.output(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F});
+  signals.y_pid = state.controller.output(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F}, signals.stop);
   // choose (Switch)
   float y_chosen{};
   y_chosen = duet::blocks::select(duet::blocks::convert<bool>(signals.controller), signals.y_lqr, signals.y_pid);
@@ -492,7 +492,7 @@ void step_rate_1() {
   for (std::size_t i = 0; i < 4; ++i) state.tuned_before[i].update(tuned_settings[i]);
   state.messages_before.update(linux_messages);
   state.source_before.update(signals.gains_from);
-  state.controller.update_clamped(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F}, 0.001F);
+  state.controller.update_clamped(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F}, 0.001F, signals.stop);
   state.velocity.update(signals.position, 1.0F, 20.0F, 0.001F);
   state.set_duty_latest.write(signals.duty_percent);
   state.trigger_wave.update();

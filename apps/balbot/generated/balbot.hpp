@@ -51,7 +51,7 @@ struct Limits {
 };
 namespace parameter_limits {
 inline constexpr Limits P{-1, 1};
-inline constexpr Limits I{-10, 10};
+inline constexpr Limits I{-20, 20};
 inline constexpr Limits D{-1, 1};
 inline constexpr Limits N{0, 1000};
 inline constexpr Limits target{-20, 20};

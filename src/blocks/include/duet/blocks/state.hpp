@@ -95,6 +95,9 @@ struct PidGains {
 // integrator integrates. A NaN unlimited output or increment clamps nothing (every comparison is false).
 // update() and update_clamped() need the gains and error that output() saw in the same step; they recompute the
 // derivative from them.
+// The overloads with `reset` are Simulink's external reset, level-triggered: in a step whose reset is true the PID
+// is at rest, integrator and filter 0, both when it computes its output and after its update, so the first step
+// without reset starts from rest (the output of a step in reset is P e + N D e, limited).
 template <Floating T>
 struct DiscretePid {
   T integrator;
@@ -102,6 +105,9 @@ struct DiscretePid {
 
   [[nodiscard]] constexpr T output(T error, const PidGains<T>& gains) const {
     return saturate(add(add(multiply(gains.p, error), integrator), derivative(error, gains)), gains.lower, gains.upper);
+  }
+  [[nodiscard]] constexpr T output(T error, const PidGains<T>& gains, bool reset) const {
+    return reset ? DiscretePid{T{0}, T{0}}.output(error, gains) : output(error, gains);
   }
 
   constexpr void update(T error, const PidGains<T>& gains, T period_s) {
@@ -117,6 +123,21 @@ struct DiscretePid {
     const bool clamped = (unlimited > gains.upper && increment > T{0}) || (unlimited < gains.lower && increment < T{0});
     filter = add(filter, multiply(period_s, filter_input));
     if (!clamped) integrator = add(integrator, increment);
+  }
+
+  constexpr void update(T error, const PidGains<T>& gains, T period_s, bool reset) {
+    if (reset) {
+      *this = {T{0}, T{0}};
+    } else {
+      update(error, gains, period_s);
+    }
+  }
+  constexpr void update_clamped(T error, const PidGains<T>& gains, T period_s, bool reset) {
+    if (reset) {
+      *this = {T{0}, T{0}};
+    } else {
+      update_clamped(error, gains, period_s);
+    }
   }
 
  private:

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "duet/control/pid_design.hpp"
 #include "duet/support/result.hpp"
 
 namespace duet::control {
@@ -29,8 +30,18 @@ struct DesignSpec {
   std::string model_place;         // "file:line:column" of B (or balbot) or C: where a design failure is reported
 };
 
+// The specification of `duet design pid` (docs/CLI.md): the robot, the loop around the PID and the criterion.
+struct PidDesignSpec {
+  PidLoopSpec loop;
+  PidCriterion criterion;
+  std::string type = "single";  // the printed parameters' type: single or double
+  std::string model_place;      // "file:line:column" of balbot: where a design failure is reported
+};
+
 // `text` is the file's content; `file` names it in errors.
 [[nodiscard]] Result<DesignSpec> parse_design_spec(std::string_view text, const std::string& file, DesignKind kind);
 [[nodiscard]] Result<DesignSpec> load_design_spec(const std::string& path, DesignKind kind);
+[[nodiscard]] Result<PidDesignSpec> parse_pid_design_spec(std::string_view text, const std::string& file);
+[[nodiscard]] Result<PidDesignSpec> load_pid_design_spec(const std::string& path);
 
 }  // namespace duet::control
