@@ -20,10 +20,11 @@ mkdir -p "$out"
 run=$!
 trap 'kill $run 2>/dev/null || true' EXIT
 for attempt in $(seq 50); do  # until the bridge and the firmware's application channel answer
-  python3 bench/websocket_set.py "$websocket" P=0.02 I=0.001 D=0.019 >/dev/null 2>&1 && break
+  python3 bench/websocket_set.py "$websocket" P=0.31 I=8 D=0.06 >/dev/null 2>&1 && break
   sleep 0.2
 done
-python3 bench/websocket_set.py "$websocket" P=0.0196 I=0 D=0.0187
+# The PID balances the robot: gains near the shipped ones, then the shipped ones (P, I, D of apps/balbot/balbot.yaml).
+python3 bench/websocket_set.py "$websocket" P=0.3 I=8 D=0.06
 wait $run
 trap - EXIT
 
