@@ -63,8 +63,17 @@ std::array<std::uint8_t, board::device_interrupt_count> task_of_line = [] {
 
 // Spins, as the board's port does: under QEMU's -icount,sleep=off a core sleeping in WFI misses every other tick
 // of the base timer (measured: 50,000 cycles of the 25 MHz timer per 1 ms tick instead of 25,000, so the core load
-// read half of what it is). Spinning costs no more wall time here: QEMU runs the loop fast.
-void RobotPort::idle() { report.between_ticks(executive); }
+// read half of what it is). At shift=2 a millisecond is 250,000 instructions, most of them this loop's: QEMU
+// translates a NOP to nothing but the count, so a round of 64 of them costs it about what the loop's few other
+// instructions cost, and the idle millisecond 0.1 ms of wall time instead of 0.33 (docs/LINK.md, "Pacing"). The
+// executive measures tasks by the timer, so the core load does not depend on what idling executes.
+// Not inlined: GCC takes the .rept for one instruction when it sizes the branches around it.
+[[gnu::noinline]] void idle_round() { asm volatile(".rept 64\n nop\n .endr"); }
+
+void RobotPort::idle() {
+  report.between_ticks(executive);
+  idle_round();
+}
 
 // Every interrupt task comes from the plant, on a plant line, more urgent than the base rate: the plant link runs it
 // while the base tick's handler waits for the plant (plant_link.hpp).
