@@ -114,6 +114,7 @@ using balbot::pil::executive;
 
 extern "C" void TIMER0_IRQHandler() {
   duet::mps2_an386::ExecutivePort::acknowledge_base_tick();
+  balbot::pil::host_channels_new_tick();
   if (executive.state() == duet::rt::ExecutiveState::running) {
     // duet sim's order: the plant moves to the tick's time (its interrupts run their tasks), then the tick's steps.
     balbot::pil::link.tick(static_cast<double>(executive.ticks()) * balbot::pil::base_period_s);
