@@ -92,8 +92,12 @@ void pacing_lines(const PilRun& run, std::ostream& out) {
     out << "they went only " << fixed(*speed, 2)
         << " x real time: the emulator is slower than the robot's time, and each tick falls further behind\n";
   } else {
+    // A run that went s x real time between its stalls catches up s - 1 seconds a second.
     out << "stalls: ticks that took long (the longest " << milliseconds(pacing.longest_busy, 1)
-        << ") left the run behind until it caught up\n";
+        << ") left the run behind";
+    if (speed)
+      out << ", and at " << fixed(*speed, 2) << " x real time it caught up " << fixed(*speed - 1, 2) << " s a second";
+    out << '\n';
   }
   if (machine_busy) {
     out << indent << "     " << machine_line() << ": QEMU and the plant got theirs late\n";

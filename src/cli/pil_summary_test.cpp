@@ -168,8 +168,8 @@ TEST(PilSummary, TooManyLateTicksFromStallsOnABusyMachineSayWhy) {
             "            the first second (start-up): 0 of 1,000 ticks more than 1 ms late\n"
             "            without the waits QEMU, the firmware, the link and the plant went 1.50 x real time; the "
             "longest tick 13.0 ms\n"
-            "            why: stalls: ticks that took long (the longest 13.0 ms) left the run behind until it caught "
-            "up\n"
+            "            why: stalls: ticks that took long (the longest 13.0 ms) left the run behind, and at 1.50 x "
+            "real time it caught up 0.50 s a second\n"
             "                 other programs kept 1.8 of the machine's 2 processors busy: QEMU and the plant got "
             "theirs late\n");
 }
