@@ -31,6 +31,7 @@ print(*(s.getsockname()[1] for s in sockets))')
 label=no-stress
 if $stress; then
   label=stress
+  command -v stress-ng >/dev/null || { echo "pil_pacing: stress-ng is not installed (scripts/setup.sh installs it)" >&2; exit 1; }
   stress-ng --cpu 2 --timeout $((seconds + 30))s --quiet &
   stressing=$!
   trap 'kill $stressing 2>/dev/null || true; wait $stressing 2>/dev/null || true' EXIT
