@@ -102,6 +102,7 @@ void PlantLink::bye() {
   if (!ok()) return;
   const TimeHeld held;
   send(link::encode_empty(frame_, FrameKind::bye));
+  flush();
 }
 
 // Lets the interrupt's task run: time resumes and interrupts are unmasked for as long as it takes, which is at once
@@ -121,34 +122,39 @@ bool PlantLink::raise(std::string_view name, TimeHeld& held) {
 }
 
 void PlantLink::send(std::span<const std::uint8_t> frame) {
-  if (to_plant_ < 0) return;
-  if (semihosting::write(to_plant_, frame) != frame.size()) {
+  static_assert(outgoing_capacity >= sizeof frame_, "a frame fits an empty buffer");
+  if (outgoing_size_ + frame.size() > outgoing_capacity) flush();
+  for (const std::uint8_t byte : frame) outgoing_[outgoing_size_++] = byte;
+}
+
+void PlantLink::flush() {
+  const std::span<const std::uint8_t> pending = std::span{outgoing_}.first(outgoing_size_);
+  outgoing_size_ = 0;
+  if (to_plant_ < 0 || pending.empty()) return;
+  if (semihosting::write(to_plant_, pending) != pending.size()) {
     semihosting::close(to_plant_);
     to_plant_ = -1;  // no ERROR frame can follow
     fail("the plant closed its pipe");
   }
 }
 
-bool PlantLink::read_exactly(std::span<std::uint8_t> bytes) {
-  while (!bytes.empty()) {
-    const std::size_t got = semihosting::read(from_plant_, bytes);
-    if (got == 0) {
-      fail("the plant closed its pipe");
-      return false;
-    }
-    bytes = bytes.subspan(got);
-  }
-  return true;
+bool PlantLink::read_more() {
+  incoming_begin_ = 0;
+  incoming_end_ = semihosting::read(from_plant_, incoming_);
+  if (incoming_end_ == 0) fail("the plant closed its pipe");
+  return incoming_end_ != 0;
 }
 
 bool PlantLink::receive() {
-  std::uint8_t header[link::header_size];
-  if (!read_exactly(header)) return false;
-  link::DecodeStatus status = decoder_.feed(header).status;
-  if (status == link::DecodeStatus::need_more) {
-    const std::span<std::uint8_t> payload = std::span{frame_}.first(decoder_.announced());
-    if (!read_exactly(payload)) return false;
-    status = decoder_.feed(payload).status;
+  flush();
+  if (!ok()) return false;
+  link::DecodeStatus status = link::DecodeStatus::need_more;
+  while (status == link::DecodeStatus::need_more) {
+    // Never an empty feed: the decoder would give the frame it last completed again.
+    if (incoming_begin_ == incoming_end_ && !read_more()) return false;
+    const auto fed = decoder_.feed(std::span{incoming_}.subspan(incoming_begin_, incoming_end_ - incoming_begin_));
+    incoming_begin_ += fed.used;
+    status = fed.status;
   }
   if (status != link::DecodeStatus::frame) {
     fail("the plant sent a bad frame: ", link::describe(decoder_.error()));
@@ -175,6 +181,7 @@ void PlantLink::fail(std::string_view what, std::string_view detail) {
   error_.append(what).append(detail);
   // Tell the plant, so that it ends the session instead of waiting for a frame that will not come.
   send(link::encode_error(frame_, error_.view()));
+  flush();
 }
 
 }  // namespace duet::mps2_an386

@@ -10,11 +10,13 @@
 #include <fstream>
 #include <ostream>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "child_process.hpp"
 #include "duet/link/named_pipes.hpp"
 #include "firmware_console.hpp"
+#include "machine_load.hpp"
 #include "pil_programs.hpp"
 #include "pil_summary.hpp"
 #include "plant_control_endpoint.hpp"
@@ -29,6 +31,7 @@ using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
 
 constexpr std::string_view prefix = "duet pil: ";
+constexpr auto console_gathering = 10ms;
 
 // Bytes from a pipe, cut into lines (a line too long to be one is cut too).
 class LineSplitter {
@@ -128,6 +131,10 @@ class Supervisor {
                                   {unless_ended(qemu_.errors_fd(), qemu_errors_), POLLIN, 0}};
       if (bridge_ != nullptr) watched.push_back({unless_ended(bridge_->errors_fd(), bridge_errors_), POLLIN, 0});
       ::poll(watched.data(), watched.size(), 100);  // also the pace at which exits are noticed
+      // QEMU writes the console a byte per system call: read as they come, a second's report (some 1,700 bytes)
+      // would wake this thread as many times, each wake-up taking a processor from QEMU and the plant in the tick
+      // that prints it. Let them gather a little.
+      std::this_thread::sleep_for(console_gathering);
       pump();
       if (signals.received()) return Ending::signal;
       if (qemu_.exit_code()) return Ending::qemu_exited;
@@ -349,6 +356,7 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
     listening.websocket = bridge_start.websocket;
   }
   const Clock::time_point start = Clock::now();
+  const MachineLoadMeter machine_load;
   PlantSession session{std::move(pipes).value(), plant, {.paced = !options.lock_step}, 10s};
   print_how_to_connect(listening, folder.value().path(), control.value(), streams.out);
 
@@ -361,7 +369,8 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   const double run_wall_s = std::chrono::duration<double>(Clock::now() - start).count();
 
   const bool went_well = judge(ending, supervisor, outcome, session_ended_first, streams.out, streams.err);
-  const PilRun run = summarise(options, chosen.value(), plant, control.value(), supervisor, outcome, run_wall_s);
+  PilRun run = summarise(options, chosen.value(), plant, control.value(), supervisor, outcome, run_wall_s);
+  run.machine = machine_load.finish(run_wall_s);
   streams.out << format_summary(run) << std::flush;
 
   const Status written = write_recording_files(plant.recording(), options.recording,

@@ -24,16 +24,87 @@ std::string describe(const TiltStatistics& tilt) {
          fixed(tilt.largest_abs_deg, 2) + " deg";
 }
 
+std::string milliseconds(std::chrono::nanoseconds duration, int digits) {
+  return fixed(std::chrono::duration<double, std::milli>(duration).count(), digits) + " ms";
+}
+
+std::string with_thousands(std::uint64_t count) {
+  std::string digits = std::to_string(count);
+  for (std::size_t at = digits.size(); at > 3; at -= 3) digits.insert(at - 3, ",");
+  return digits;
+}
+
 void run_lines(const PilRun& run, std::ostream& out) {
   const double model_s = run.model_time_s;
   out << "  run       " << fixed(model_s, 3) << " s of model time in " << fixed(run.wall_s, 3) << " s of wall time";
   if (run.wall_s > 0) out << ": " << fixed(model_s / run.wall_s, 2) << " x real time";
   out << (run.lock_step ? " (lock-step)\n" : " (real time)\n");
-  if (!run.lock_step && run.session) {
-    const auto worst_ms = std::chrono::duration<double, std::milli>(run.session->worst_lateness).count();
-    out << "            late ticks " << run.session->late_ticks;
-    if (run.session->late_ticks > 0) out << ", the latest " << fixed(worst_ms, 3) << " ms late";
+}
+
+// How well real time was kept, in words for someone who has not read the pacer: the figure after the first second
+// (what the demonstration promises), how the late ticks came, whether the loop could keep real time at all, and when
+// too many were late, why.
+void pacing_lines(const PilRun& run, std::ostream& out) {
+  if (run.lock_step || !run.session) return;
+  const link::PacingReport& pacing = run.session->pacing;
+  const link::Lateness& settled = pacing.after_first_second;
+  const std::string late = "more than " + milliseconds(pacing.late_threshold, 0) + " late";
+  constexpr std::string_view indent = "            ";
+  out << "  pacing    ";
+  if (settled.ticks == 0) {
+    out << "the run ended within its first second (start-up), which is not judged\n";
+  } else {
+    out << "after the first second " << with_thousands(settled.late) << " of " << with_thousands(settled.ticks)
+        << " ticks (" << fixed(100 * settled.late_fraction(), 2) << " %) were " << late
+        << " (allowed: " << fixed(100 * late_ticks_allowed, 0) << " %)";
+    if (settled.late > 0) out << ", the latest " << milliseconds(settled.worst, 1);
+    out << '\n' << indent;
+    if (const auto within = settled.within(0.99)) {
+      out << "99 % within " << milliseconds(*within, 1);
+    } else {
+      out << "more than 1 % over " << milliseconds(link::Lateness::bin_bounds.back(), 0) << " late";
+    }
+    if (settled.late > 0) {
+      out << "; late in " << with_thousands(settled.late_stretches) << " stretches, the longest "
+          << with_thousands(settled.longest_stretch) << " ticks (each a fall behind, then catching up)";
+    }
     out << '\n';
+  }
+  const link::Lateness& start = pacing.first_second;
+  out << indent << "the first second (start-up): " << with_thousands(start.late) << " of "
+      << with_thousands(start.ticks) << " ticks " << late;
+  if (start.late > 0) out << ", the latest " << milliseconds(start.worst, 1);
+  out << '\n';
+  const std::optional<double> speed = pacing.loop_speed();
+  if (speed) {
+    out << indent << "without the waits QEMU, the firmware, the link and the plant went " << fixed(*speed, 2)
+        << " x real time; the longest tick " << milliseconds(pacing.longest_busy, 1) << '\n';
+  }
+  const bool machine_busy = run.machine && run.machine->others_busy >= 0.5;
+  const auto machine_line = [&] {
+    return "other programs kept " + fixed(run.machine->others_busy, 1) + " of the machine's " +
+           std::to_string(run.machine->processors) + " processors busy";
+  };
+  if (settled.ticks == 0 || settled.late_fraction() <= late_ticks_allowed) {
+    if (run.machine) out << indent << machine_line() << '\n';
+    return;
+  }
+  out << indent << "why: ";
+  if (speed && *speed < 1) {
+    out << "they went only " << fixed(*speed, 2)
+        << " x real time: the emulator is slower than the robot's time, and each tick falls further behind\n";
+  } else {
+    // A run that went s x real time between its stalls catches up s - 1 seconds a second.
+    out << "stalls: ticks that took long (the longest " << milliseconds(pacing.longest_busy, 1)
+        << ") left the run behind";
+    if (speed)
+      out << ", and at " << fixed(*speed, 2) << " x real time it caught up " << fixed(*speed - 1, 2) << " s a second";
+    out << '\n';
+  }
+  if (machine_busy) {
+    out << indent << "     " << machine_line() << ": QEMU and the plant got theirs late\n";
+  } else if (run.machine) {
+    out << indent << "     " << machine_line() << '\n';
   }
 }
 
@@ -160,6 +231,7 @@ std::string format_summary(const PilRun& run) {
   std::ostringstream out;
   out << "summary\n";
   run_lines(run, out);
+  pacing_lines(run, out);
   tilt_lines(run, out);
   if (run.session) {
     out << "  link      " << run.session->ticks << " ticks, " << run.session->interrupts << " interrupts, "

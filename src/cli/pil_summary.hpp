@@ -12,6 +12,7 @@
 #include "duet/model/simulation.hpp"
 #include "duet/plant/plant_controls.hpp"
 #include "firmware_console.hpp"
+#include "machine_load.hpp"
 
 namespace duet::cli {
 
@@ -44,12 +45,17 @@ struct PilRun {
   std::optional<TiltStatistics> tilt_after_release;
   bool recording_truncated = false;
   FirmwareReport firmware;
-  bool bridge = true;             // false: --no-bridge
-  std::optional<XcpTraffic> xcp;  // the bridge's counters, when it said them
+  bool bridge = true;                  // false: --no-bridge
+  std::optional<XcpTraffic> xcp;       // the bridge's counters, when it said them
+  std::optional<MachineLoad> machine;  // what the rest of the machine did meanwhile
   // What the dashboards pushed and restarted, with the model times, and what the plant offers (for the names).
   std::vector<plant::AppliedDisturbance> disturbances;
   std::vector<plant::DisturbanceKind> offered;
 };
+
+// The share of ticks after the first second that may be later than the late threshold (1 ms) in a run that keeps
+// real time; beyond it the summary says why it did not.
+inline constexpr double late_ticks_allowed = 0.01;
 
 // The summary, several lines, each ending with a newline.
 [[nodiscard]] std::string format_summary(const PilRun& run);

@@ -4,7 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <string>
+
 #include "bridge_counters.hpp"
+#include "machine_load.hpp"
 
 namespace duet::cli {
 namespace {
@@ -81,8 +85,16 @@ TEST(PilSummary, TheWholeText) {
   run.session->writes = 6000;
   run.session->reads = 3000;
   run.session->last_tick_s = 3;
-  run.session->late_ticks = 2;
-  run.session->worst_lateness = std::chrono::microseconds{1500};
+  link::PacingReport& pacing = run.session->pacing;
+  pacing.first_second.ticks = 1000;
+  pacing.first_second.late = 2;
+  pacing.first_second.worst = std::chrono::microseconds{1500};
+  pacing.after_first_second.ticks = 2000;
+  pacing.after_first_second.histogram[0] = 2000;
+  pacing.busy_model_s = 2;
+  pacing.busy_wall = std::chrono::milliseconds{1200};
+  pacing.longest_busy = std::chrono::milliseconds{3};
+  run.machine = MachineLoad{2, 0.1};
   run.tilt = TiltStatistics{0, 3000, 0.5, 3, 5};
   run.tilt_after_release = TiltStatistics{2, 1000, 0, 1, 1};
   take(run.firmware, parse_console_line("duet-status time_s=3 ticks=3000 busy_ppm=123456 overruns=1"));
@@ -95,7 +107,12 @@ TEST(PilSummary, TheWholeText) {
   EXPECT_EQ(format_summary(run),
             "summary\n"
             "  run       3.000 s of model time in 2.000 s of wall time: 1.50 x real time (real time)\n"
-            "            late ticks 2, the latest 1.500 ms late\n"
+            "  pacing    after the first second 0 of 2,000 ticks (0.00 %) were more than 1 ms late (allowed: 1 %)\n"
+            "            99 % within 0.1 ms\n"
+            "            the first second (start-up): 2 of 1,000 ticks more than 1 ms late, the latest 1.5 ms\n"
+            "            without the waits QEMU, the firmware, the link and the plant went 1.67 x real time; the "
+            "longest tick 3.0 ms\n"
+            "            other programs kept 0.1 of the machine's 2 processors busy\n"
             "  tilt      whole run: mean 0.50 deg, RMS 3.00 deg, largest |theta| 5.00 deg\n"
             "            from the release at 2.000 s: mean 0.00 deg, RMS 1.00 deg, largest |theta| 1.00 deg\n"
             "  link      3000 ticks, 0 interrupts, 6000 writes, 3000 reads\n"
@@ -124,6 +141,95 @@ TEST(PilSummary, EveryDisturbanceWithItsExactModelTime) {
                       "  firmware  "),
             std::string::npos)
       << text;
+}
+
+// A real-time run whose ticks after the first second were late: 3 % of 9,000, in 30 stretches.
+PilRun late_run(double loop_speed, double others_busy) {
+  PilRun run;
+  run.model_time_s = 10;
+  run.wall_s = 10;
+  run.session = link::ServeSummary{};
+  link::PacingReport& pacing = run.session->pacing;
+  pacing.first_second.ticks = 1000;
+  pacing.after_first_second.ticks = 9000;
+  pacing.after_first_second.late = 270;
+  pacing.after_first_second.worst = std::chrono::microseconds{12'340};
+  pacing.after_first_second.late_stretches = 30;
+  pacing.after_first_second.longest_stretch = 15;
+  pacing.after_first_second.histogram[0] = 8700;
+  pacing.after_first_second.histogram[3] = 200;
+  pacing.after_first_second.histogram[5] = 100;
+  pacing.busy_model_s = 9;
+  pacing.busy_wall =
+      std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::duration<double>{9 / loop_speed});
+  pacing.longest_busy = std::chrono::microseconds{13'000};
+  run.machine = MachineLoad{2, others_busy};
+  return run;
+}
+
+// The pacing lines of a summary: from its line "  pacing" to the line after them.
+std::string pacing_lines(const std::string& summary) {
+  const std::size_t begin = summary.find("  pacing");
+  const std::size_t end = summary.find("\n  tilt", begin) != std::string::npos ? summary.find("\n  tilt", begin)
+                                                                               : summary.find("\n  link", begin);
+  return summary.substr(begin, end + 1 - begin);
+}
+
+TEST(PilSummary, TooManyLateTicksFromStallsOnABusyMachineSayWhy) {
+  EXPECT_EQ(pacing_lines(format_summary(late_run(1.5, 1.8))),
+            "  pacing    after the first second 270 of 9,000 ticks (3.00 %) were more than 1 ms late (allowed: 1 %), "
+            "the latest 12.3 ms\n"
+            "            99 % within 10.0 ms; late in 30 stretches, the longest 15 ticks (each a fall behind, then "
+            "catching up)\n"
+            "            the first second (start-up): 0 of 1,000 ticks more than 1 ms late\n"
+            "            without the waits QEMU, the firmware, the link and the plant went 1.50 x real time; the "
+            "longest tick 13.0 ms\n"
+            "            why: stalls: ticks that took long (the longest 13.0 ms) left the run behind, and at 1.50 x "
+            "real time it caught up 0.50 s a second\n"
+            "                 other programs kept 1.8 of the machine's 2 processors busy: QEMU and the plant got "
+            "theirs late\n");
+}
+
+TEST(PilSummary, AnEmulatorSlowerThanRealTimeIsTheReason) {
+  const std::string lines = pacing_lines(format_summary(late_run(0.8, 0.2)));
+  EXPECT_NE(
+      lines.find("            why: they went only 0.80 x real time: the emulator is slower than the robot's time, "
+                 "and each tick falls further behind\n"
+                 "                 other programs kept 0.2 of the machine's 2 processors busy\n"),
+      std::string::npos)
+      << lines;
+}
+
+TEST(PilSummary, LateTicksWithinTheAllowanceNeedNoReason) {
+  PilRun run = late_run(1.5, 1.8);
+  run.session->pacing.after_first_second.late = 90;  // 1 %
+  const std::string lines = pacing_lines(format_summary(run));
+  EXPECT_NE(lines.find("90 of 9,000 ticks (1.00 %)"), std::string::npos) << lines;
+  EXPECT_EQ(lines.find("why"), std::string::npos) << lines;
+}
+
+TEST(PilSummary, ARunWithinItsFirstSecondIsNotJudged) {
+  PilRun run = late_run(1.5, 0);
+  run.session->pacing.after_first_second = {};
+  run.session->pacing.busy_wall = {};
+  run.machine.reset();
+  EXPECT_EQ(pacing_lines(format_summary(run)),
+            "  pacing    the run ended within its first second (start-up), which is not judged\n"
+            "            the first second (start-up): 0 of 1,000 ticks more than 1 ms late\n");
+}
+
+TEST(PilSummary, TheMachinesBusyTimeFromProcStat) {
+  // user nice system idle iowait irq softirq steal guest guest_nice
+  const std::string text =
+      "cpu  100 20 30 5000 7 1 2 4 50 0\n"
+      "cpu0 50 10 15 2500 3 0 1 2 25 0\n"
+      "intr 12345\n";
+  const auto busy = busy_seconds_from_proc_stat(text, 100);
+  ASSERT_TRUE(busy);
+  EXPECT_DOUBLE_EQ(*busy, (100 + 20 + 30 + 1 + 2 + 4) / 100.0);  // guest time is within user already
+  EXPECT_FALSE(busy_seconds_from_proc_stat("cpu0 1 2 3 4 5 6 7 8\n", 100));
+  EXPECT_FALSE(busy_seconds_from_proc_stat("cpu  1 2 3\n", 100));
+  EXPECT_FALSE(busy_seconds_from_proc_stat(text, 0));
 }
 
 TEST(PilSummary, WhatIsMissingIsSaid) {

@@ -95,8 +95,7 @@ class Server {
     summary_.last_tick_s = tick.time_s;
     if (options_.paced) {
       pacer_.wait_until(tick.time_s);
-      summary_.late_ticks = pacer_.late();
-      summary_.worst_lateness = pacer_.worst_lateness();
+      summary_.pacing = pacer_.report();
     }
     plant_.advance(tick.time_s, raise_);
     if (failure_) return *failure_;

@@ -25,8 +25,14 @@ board::UartLine<duet::app_channel::Endpoint> application_line{
 
 void start_host_channels() {
   xcp_line.start();
+  // The executive's account each second is some 460 bytes, the telemetry some 25 every 10 ms: 64 bytes a tick
+  // spread the account over 8 ticks (sent at once it cost its tick 1 to 1.5 ms of wall time). XCP is not limited:
+  // DAQ of 16 signals alone sends 73 bytes a tick.
+  application_line.limit_per_tick(64);
   application_line.start();
 }
+
+void host_channels_new_tick() { application_line.new_tick(); }
 
 HostChannelCounters host_channel_counters() {
   return {xcp_line.bytes_received(), xcp_line.bytes_sent(), application_line.bytes_received(),

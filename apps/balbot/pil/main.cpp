@@ -63,8 +63,21 @@ std::array<std::uint8_t, board::device_interrupt_count> task_of_line = [] {
 
 // Spins, as the board's port does: under QEMU's -icount,sleep=off a core sleeping in WFI misses every other tick
 // of the base timer (measured: 50,000 cycles of the 25 MHz timer per 1 ms tick instead of 25,000, so the core load
-// read half of what it is). Spinning costs no more wall time here: QEMU runs the loop fast.
-void RobotPort::idle() { report.between_ticks(executive); }
+// read half of what it is). At shift=2 a millisecond is 250,000 instructions, most of them this loop's: QEMU
+// translates a NOP to nothing but the count, so a round of 64 of them costs it about what the loop's few other
+// instructions cost, and the idle millisecond 0.1 ms of wall time instead of 0.33 (docs/LINK.md, "Pacing"). The
+// executive measures tasks by the timer, so the core load does not depend on what idling executes.
+void RobotPort::idle() {
+  report.between_ticks(executive);
+  // Inline, so that a round needs no return (an indirect jump QEMU looks up in its tables: 0.5 to 0.75 of a
+  // processor for QEMU's thread against 0.45 to 0.65 inline); written out rather than .rept, which GCC would count
+  // as one instruction when it sizes the branches around it.
+  asm volatile(
+      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
+      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
+      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
+      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n");
+}
 
 // Every interrupt task comes from the plant, on a plant line, more urgent than the base rate: the plant link runs it
 // while the base tick's handler waits for the plant (plant_link.hpp).
@@ -105,6 +118,7 @@ using balbot::pil::executive;
 
 extern "C" void TIMER0_IRQHandler() {
   duet::mps2_an386::ExecutivePort::acknowledge_base_tick();
+  balbot::pil::host_channels_new_tick();
   if (executive.state() == duet::rt::ExecutiveState::running) {
     // duet sim's order: the plant moves to the tick's time (its interrupts run their tasks), then the tick's steps.
     balbot::pil::link.tick(static_cast<double>(executive.ticks()) * balbot::pil::base_period_s);

@@ -16,6 +16,8 @@ duet::mps2_an386::PlantLink& plant_link();
 
 // XCP on UART0 and the application channel on UART1, served by their UARTs' interrupts at the lowest priority.
 void start_host_channels();
+// From the base tick's handler: the application channel may send its next tick's bytes.
+void host_channels_new_tick();
 
 struct HostChannelCounters {
   std::uint32_t xcp_bytes_received;

@@ -11,6 +11,10 @@
 //
 // A task line per task follows every status line, then the channels' line. Cycles count the board's 25 MHz timer
 // (40 ns), which the plant link holds while it talks to the plant: net execution times, without preemption.
+//
+// A second's report is composed at once and written a line per base tick: QEMU writes the console a byte per system
+// call, and the whole report (some 1,700 bytes) in one idle stretch took 3 to 12 ms of wall time inside one 1 ms
+// tick, which a real-time run then had to catch up (docs/LINK.md, "Pacing"). A line costs a tick some 0.2 ms.
 
 #include <cstdint>
 #include <string_view>
@@ -35,16 +39,24 @@ class StatusReport {
     line_.append("duet-pil model=").append(model_.name).append(" base_period_ns=").append(model_.base_period_ns);
     line_.append(" tasks=").append(model_.tasks.size()).append(" duration_ms=").append(duration_ms);
     emit();
+    write_pending();
     ticks_per_report_ = 1'000'000'000U / model_.base_period_ns;
     next_report_ = ticks_per_report_;
   }
 
-  // From the idle loop: the report of every second of model time that has passed.
+  // From the idle loop: the report of every second of model time that has passed, a line per tick.
   template <typename Executive>
   void between_ticks(const Executive& executive) {
-    if (executive.ticks() < next_report_) return;
-    next_report_ += ticks_per_report_;
-    status(executive);
+    const std::uint64_t ticks = executive.ticks();
+    if (ticks >= next_report_) {
+      next_report_ += ticks_per_report_;
+      write_pending();  // what is left of the last report, if its lines took more ticks than a second has
+      status(executive);
+    }
+    if (ticks != last_line_tick_ && written_ < pending_.view().size()) {
+      last_line_tick_ = ticks;
+      write_line();
+    }
   }
 
   template <typename Executive>
@@ -55,12 +67,13 @@ class StatusReport {
     line_.append(executive.ticks()).append(" overruns=").append(duet::mps2_an386::total_overruns(executive, model_));
     line_.append(" link=").append(link.ok() ? std::string_view{"ok"} : link.error());
     emit();
+    write_pending();
   }
 
  private:
   template <typename Executive>
   void status(const Executive& executive) {
-    duet::mps2_an386::write_executive_report(executive, model_);
+    duet::mps2_an386::write_executive_report(executive, model_, [this](std::string_view line) { queue(line); });
     account_.publish(executive, duet::mps2_an386::core_clock_hz);
     const HostChannelCounters counters = host_channel_counters();
     line_.clear();
@@ -92,11 +105,40 @@ class StatusReport {
 
   void emit() {
     line_.append('\n');
-    duet::cortex_m::console_write(line_.view());
+    queue(line_.view());
+  }
+
+  void queue(std::string_view line) {
+    if (pending_.view().size() + line.size() > pending_capacity) write_pending();
+    pending_.append(line);
+  }
+
+  // The next pending line.
+  void write_line() {
+    const std::string_view rest = pending_.view().substr(written_);
+    std::size_t length = 0;  // up to its newline (a search of its own: string_view's wants the C library's memchr)
+    while (length < rest.size() && rest[length++] != '\n') {
+    }
+    const std::string_view line = rest.substr(0, length);
+    duet::cortex_m::console_write(line);
+    written_ += line.size();
+    if (written_ == pending_.view().size()) {
+      pending_.clear();
+      written_ = 0;
+    }
+  }
+
+  void write_pending() {
+    while (written_ < pending_.view().size()) write_line();
   }
 
   const duet::rt::ModelDescription& model_;
+  static constexpr std::size_t pending_capacity = 4096;  // a report of 11 tasks is some 1,700 bytes
+
   duet::TextBuffer<240> line_;
+  duet::TextBuffer<pending_capacity> pending_;  // lines not written yet, from written_ on
+  std::size_t written_ = 0;
+  std::uint64_t last_line_tick_ = 0;
   balbot::firmware::AccountPublisher account_{model_};
   std::uint64_t ticks_per_report_ = 1000;
   std::uint64_t next_report_ = 1000;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string_view>
 
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
@@ -20,12 +21,13 @@ std::uint64_t total_overruns(const Executive& executive, const rt::ModelDescript
   return overruns;
 }
 
-template <typename Executive>
-void write_executive_report(const Executive& executive, const rt::ModelDescription& model) {
+// `write_line(std::string_view)` takes each line, its newline included.
+template <typename Executive, typename WriteLine>
+void write_executive_report(const Executive& executive, const rt::ModelDescription& model, WriteLine write_line) {
   TextBuffer<240> line;
-  const auto emit = [&line] {
+  const auto emit = [&line, &write_line] {
     line.append('\n');
-    cortex_m::console_write(line.view());
+    write_line(line.view());
     line.clear();
   };
   const std::uint64_t ticks = executive.ticks();
@@ -46,6 +48,12 @@ void write_executive_report(const Executive& executive, const rt::ModelDescripti
     line.append(" max_cycles=").append(statistics.max_cycles);
     emit();
   }
+}
+
+// The same on the console.
+template <typename Executive>
+void write_executive_report(const Executive& executive, const rt::ModelDescription& model) {
+  write_executive_report(executive, model, [](std::string_view line) { cortex_m::console_write(line); });
 }
 
 }  // namespace duet::mps2_an386

@@ -3,9 +3,12 @@
 // WRITE and READ frames to a simulated plant in a host program, and each base tick a TICK, during which the plant's
 // interrupts (INTERRUPT frames) run the model's interrupt tasks.
 //
-// The frames travel through two named pipes of the host that semihosting opens, reads and writes, a frame per call:
-// QEMU's UART model moves one byte per turn of its main loop (a UART link ran the robot at a sixth of real time), while
-// a semihosting call blocks the core until the host's read or write returns, which takes no emulated time.
+// The frames travel through two named pipes of the host that semihosting opens, reads and writes: QEMU's UART model
+// moves one byte per turn of its main loop (a UART link ran the robot at a sixth of real time), while a semihosting
+// call blocks the core until the host's read or write returns, which takes no emulated time. Frames that need no
+// answer (WRITE) wait in a buffer until the link next waits for the plant, and one read takes whatever the plant has
+// sent, so that a tick costs the host a pipe write and a read per round trip rather than one per frame: each write
+// woke the plant's thread, which is what a real-time run spends its wall time on (docs/LINK.md, "Pacing").
 //
 // While it talks to the plant the link masks interrupts and holds the executive's time (ExecutivePort::hold_time),
 // so the firmware sees its plant as it would see registers: the instructions that encode and decode frames are not
@@ -50,11 +53,18 @@ class PlantLink {
   // The largest frame the plant sends to this firmware: VALUES of 127 doubles; a longer one is refused.
   static constexpr std::size_t max_received_payload = 1024;
 
+  // Frames waiting to go out: a tick's WRITEs (some 11 for the robot, 30 bytes each) and the frame that waits.
+  static constexpr std::size_t outgoing_capacity = 2048;
+
   class TimeHeld;
+  // Queues a frame; it goes out with the next flush().
   void send(std::span<const std::uint8_t> frame);
-  // Waits for the plant's next frame; false (and the session failed) on garbage, an ERROR or the pipe's end.
+  void flush();
+  // Flushes, then waits for the plant's next frame; false (and the session failed) on garbage, an ERROR or the
+  // pipe's end.
   bool receive();
-  bool read_exactly(std::span<std::uint8_t> bytes);
+  // Reads what the plant has sent (at least a byte, waiting for it) into `incoming_`; false at the pipe's end.
+  bool read_more();
   bool expect(link::FrameKind kind);
   bool raise(std::string_view name, TimeHeld& held);
   void fail(std::string_view what, std::string_view detail = {});
@@ -62,7 +72,12 @@ class PlantLink {
   int to_plant_ = -1;
   int from_plant_ = -1;
   link::BasicFrameDecoder<max_received_payload> decoder_;
-  std::uint8_t frame_[max_received_payload + link::header_size]{};
+  std::uint8_t frame_[max_received_payload + link::header_size]{};  // where a frame is encoded
+  std::uint8_t outgoing_[outgoing_capacity]{};
+  std::size_t outgoing_size_ = 0;
+  std::uint8_t incoming_[max_received_payload + link::header_size]{};
+  std::size_t incoming_begin_ = 0;  // the bytes from here to incoming_end_ are not decoded yet
+  std::size_t incoming_end_ = 0;
   TextBuffer<160> error_;
 };
 

@@ -6,6 +6,10 @@
 //
 // The protocol needs receive(std::span<const std::uint8_t>) for received bytes and transmit(std::span<std::uint8_t>)
 // that frames what it has queued into the span and returns how many bytes it wrote (0: nothing to send).
+//
+// QEMU's UART sends a byte the moment it is written (a system call each), so a line may be limited to a number of
+// bytes per base tick (limit_per_tick, new_tick): a burst of hundreds of bytes otherwise costs one tick of emulated
+// time milliseconds of wall time, which a run paced to the wall clock has to catch up (docs/LINK.md, "Pacing").
 
 #include <array>
 #include <cstddef>
@@ -37,6 +41,16 @@ class UartLine {
   // From a task or any handler: there is something to send. Interrupt-safe, never waits.
   void kick() const { cortex_m::set_interrupt_pending(transmit_line_); }
 
+  // At most `bytes` a base tick from now on (0: no limit, the default). Call before start().
+  void limit_per_tick(std::uint32_t bytes) { bytes_per_tick_ = bytes; }
+  // From the base tick's handler, more urgent than the line: a new tick's bytes may go; if serve() held some back,
+  // its transmit interrupt comes again. (Should this come between serve()'s last byte and its holding back, the
+  // bytes wait one more tick.)
+  void new_tick() {
+    ticks_ = ticks_ + 1U;
+    if (held_back_) kick();
+  }
+
   // From the line's receive and transmit interrupt handlers only.
   void serve(Protocol& protocol) {
     char byte = 0;
@@ -46,14 +60,26 @@ class UartLine {
       ++bytes_received_;
     }
     uart_.clear_transmit_interrupt();
+    held_back_ = false;
     for (;;) {
       if (sent_ == framed_) {
         framed_ = protocol.transmit(frames_);
         sent_ = 0;
         if (framed_ == 0) return;
       }
+      if (bytes_per_tick_ != 0) {
+        if (tick_seen_ != ticks_) {
+          tick_seen_ = ticks_;
+          sent_this_tick_ = 0;
+        }
+        if (sent_this_tick_ == bytes_per_tick_) {
+          held_back_ = true;  // new_tick() kicks
+          return;
+        }
+      }
       if (!uart_.try_write(frames_[sent_])) return;  // the transmit interrupt comes back when there is room
       ++sent_;
+      ++sent_this_tick_;
       ++bytes_sent_;
     }
   }
@@ -73,6 +99,11 @@ class UartLine {
   std::size_t sent_ = 0;
   std::uint32_t bytes_received_ = 0;
   std::uint32_t bytes_sent_ = 0;
+  std::uint32_t bytes_per_tick_ = 0;
+  volatile std::uint32_t ticks_ = 0;  // written by new_tick() only, which preempts serve()
+  volatile bool held_back_ = false;
+  std::uint32_t tick_seen_ = 0;
+  std::uint32_t sent_this_tick_ = 0;
 };
 
 }  // namespace duet::mps2_an386

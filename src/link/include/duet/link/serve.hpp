@@ -6,10 +6,10 @@
 // firmware runs in lock-step or in real time. The server may pace the session itself (ServeOptions::paced) when the
 // firmware cannot: firmware on an emulator with a virtual clock runs as fast as the emulator goes.
 
-#include <chrono>
 #include <cstdint>
 
 #include "duet/link/frame.hpp"
+#include "duet/link/pacer.hpp"
 #include "duet/link/stream.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/support/result.hpp"
@@ -19,7 +19,7 @@ namespace duet::link {
 struct ServeOptions {
   // Real time kept by the plant: each TICK(t) waits until the wall clock reaches t, counted from the first TICK
   // (Pacer), before the plant advances; the firmware waits for TICK_DONE meanwhile. A TICK that comes after its
-  // time is served at once and counts as late.
+  // time is served at once; ServeSummary::pacing says how late each went.
   bool paced = false;
 };
 
@@ -31,9 +31,8 @@ struct ServeSummary {
   std::uint64_t reads = 0;
   double last_tick_s = 0;  // the time of the last TICK: how far the session went
   bool said_bye = false;   // false: the stream ended without BYE
-  // Paced sessions: the TICKs that came after their time, and how late the latest of them was.
-  std::uint64_t late_ticks = 0;
-  std::chrono::nanoseconds worst_lateness{0};
+  // Paced sessions: how late the TICKs went, and whether the firmware could have kept real time (Pacer).
+  PacingReport pacing;
 };
 
 // Blocks until the firmware is done, each wait up to the stream's timeout. A frame that makes no sense here, a
