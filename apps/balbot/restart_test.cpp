@@ -64,9 +64,9 @@ void knocked_over_then_restarted(double use_lqr_value) {
   ASSERT_EQ(applied.size(), 2U);
   EXPECT_EQ(applied[0].time_s, 4.0);
   EXPECT_DOUBLE_EQ(applied[1].time_s, 4.6);
-  EXPECT_LT(at("plant.theta_deg", 4.6), -90.0);  // it fell on its face
-  EXPECT_EQ(at("stop", 4.6), 1.0);               // and the safety stop holds the motors
-  EXPECT_NEAR(at("plant.theta_deg", 5.6), 5.0, 1e-9);                  // put back at the scenario's tilt
+  EXPECT_LT(at("plant.theta_deg", 4.6), -90.0);                       // it fell on its face
+  EXPECT_EQ(at("stop", 4.6), 1.0);                                    // and the safety stop holds the motors
+  EXPECT_NEAR(at("plant.theta_deg", 5.6), 5.0, 1e-9);                 // put back at the scenario's tilt
   EXPECT_EQ(at("plant.theta_deg", 7.5), at("plant.theta_deg", 5.6));  // held
   // The firmware's estimate followed the carry through the gyroscope, which it trusts (the accelerometer, little):
   // it moved as the body did (what it got wrong in the fall, it keeps).
