@@ -1,8 +1,8 @@
 // The robot's controller model against the simulated robot, disturbed during the run as the dashboard's Disturb box
 // does it (PlantControls): knocked over by a push, restarted, it is carried back up, held, let go and balanced
-// again, its tilt estimate having followed the carry through the gyroscope. The LQR drives, whatever the default.
-// (The LQR drives back to where it started: restarted after rolling 1.8 m on its face it makes it; after 3.6 m its
-// position term saturates the duty and it falls again. The firmware keeps the position it counted.)
+// again, its tilt estimate having followed the carry through the gyroscope: with the LQR and with the default PID.
+// (Both drive back to where they started, the firmware keeping the position it counted. The LQR: restarted after
+// rolling 1.8 m on its face it makes it; after 3.6 m its position term saturates the duty and it falls again.)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,7 +17,8 @@
 namespace duet::model {
 namespace {
 
-TEST(BalbotRestart, KnockedOverThenRestartedTheLqrBalancesItAgain) {
+// Balanced from 5 degrees, knocked over at 4 s, restarted as it lands; `use_lqr` 1 for the LQR, 0 for the PID.
+void knocked_over_then_restarted(double use_lqr_value) {
   auto model = load_model(DUET_BALBOT_MODEL);
   ASSERT_TRUE(model.ok()) << model.error();
   ProgramBuild build = build_program(model.value());
@@ -35,7 +36,7 @@ TEST(BalbotRestart, KnockedOverThenRestartedTheLqrBalancesItAgain) {
   SimulationOptions options;
   options.duration_s = 16;
   options.before_tick = [&](std::uint64_t tick, Interpreter& interpreter) {
-    if (tick == 0) interpreter.set_parameter(static_cast<std::size_t>(use_lqr - parameters.begin()), 0, 1);
+    if (tick == 0) interpreter.set_parameter(static_cast<std::size_t>(use_lqr - parameters.begin()), 0, use_lqr_value);
     const auto ask = [&](plant::Disturbance disturbance) {
       ASSERT_TRUE(controls.request(std::move(disturbance), [](const Result<plant::AppliedDisturbance>&) {}).ok());
     };
@@ -76,6 +77,10 @@ TEST(BalbotRestart, KnockedOverThenRestartedTheLqrBalancesItAgain) {
   EXPECT_LT(largest("plant.theta_deg", 10, 16), 5.0);  // let go at 7.6 s, balanced again
   EXPECT_LT(largest("plant.theta_deg", 13, 16), 1.0);
 }
+
+TEST(BalbotRestart, KnockedOverThenRestartedTheLqrBalancesItAgain) { knocked_over_then_restarted(1); }
+
+TEST(BalbotRestart, KnockedOverThenRestartedThePidBalancesItAgain) { knocked_over_then_restarted(0); }
 
 }  // namespace
 }  // namespace duet::model

@@ -186,10 +186,10 @@ TEST(ModelView, DrawsTheRobotWithEveryBlockInEverySubsystem) {
   const json view = view_of(text.value(), file);
   ASSERT_TRUE(view["ok"]);
   const DiagramCounts counts = count(view["diagram"]);
-  // duet model check counts 191: these and the edge detectors of its 12 edge-triggered subsystems.
-  EXPECT_EQ(counts.blocks, 179U);
+  // duet model check counts 194: these and the edge detectors of its 12 edge-triggered subsystems.
+  EXPECT_EQ(counts.blocks, 182U);
   EXPECT_EQ(counts.subsystems, 22U);
-  EXPECT_EQ(counts.wires, 179U);  // as duet model check --json counts them from the file
+  EXPECT_EQ(counts.wires, 182U);  // as duet model check --json counts them from the file
   EXPECT_EQ(view["tasks"].size(), 11U);
   // Interrupt-triggered subsystems carry their interrupt; theta is measured on its wire.
   bool interrupt_found = false;

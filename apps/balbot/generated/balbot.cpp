@@ -25,15 +25,17 @@ static_assert(offsetof(Parameters, I) == 4, "the A2L's layout");
 static_assert(offsetof(Parameters, D) == 8, "the A2L's layout");
 static_assert(offsetof(Parameters, N) == 12, "the A2L's layout");
 static_assert(offsetof(Parameters, target) == 16, "the A2L's layout");
-static_assert(offsetof(Parameters, stop_angle) == 20, "the A2L's layout");
-static_assert(offsetof(Parameters, use_lqr) == 24, "the A2L's layout");
-static_assert(offsetof(Parameters, K) == 28, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_A) == 44, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_C) == 60, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_G) == 76, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_Q) == 84, "the A2L's layout");
-static_assert(offsetof(Parameters, kalman_R) == 88, "the A2L's layout");
-static_assert(sizeof(Parameters) == 104);
+static_assert(offsetof(Parameters, speed_gain) == 20, "the A2L's layout");
+static_assert(offsetof(Parameters, position_gain) == 24, "the A2L's layout");
+static_assert(offsetof(Parameters, stop_angle) == 28, "the A2L's layout");
+static_assert(offsetof(Parameters, use_lqr) == 32, "the A2L's layout");
+static_assert(offsetof(Parameters, K) == 36, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_A) == 52, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_C) == 68, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_G) == 84, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_Q) == 92, "the A2L's layout");
+static_assert(offsetof(Parameters, kalman_R) == 96, "the A2L's layout");
+static_assert(sizeof(Parameters) == 112);
 static_assert(offsetof(Signals, sensor_ready) == 0, "the A2L's layout");
 static_assert(offsetof(Signals, device_reset_bytes) == 1, "the A2L's layout");
 static_assert(offsetof(Signals, path_reset_bytes) == 3, "the A2L's layout");
@@ -53,40 +55,41 @@ static_assert(offsetof(Signals, gyro_y) == 48, "the A2L's layout");
 static_assert(offsetof(Signals, estimate) == 52, "the A2L's layout");
 static_assert(offsetof(Signals, theta) == 60, "the A2L's layout");
 static_assert(offsetof(Signals, theta_rate) == 64, "the A2L's layout");
-static_assert(offsetof(Signals, error) == 68, "the A2L's layout");
-static_assert(offsetof(Signals, gains_from) == 72, "the A2L's layout");
-static_assert(offsetof(Signals, p_gain) == 76, "the A2L's layout");
-static_assert(offsetof(Signals, i_gain) == 80, "the A2L's layout");
-static_assert(offsetof(Signals, d_gain) == 84, "the A2L's layout");
-static_assert(offsetof(Signals, controller) == 88, "the A2L's layout");
-static_assert(offsetof(Signals, y_pid) == 92, "the A2L's layout");
-static_assert(offsetof(Signals, position) == 96, "the A2L's layout");
-static_assert(offsetof(Signals, speed) == 100, "the A2L's layout");
-static_assert(offsetof(Signals, y_lqr) == 104, "the A2L's layout");
-static_assert(offsetof(Signals, y) == 108, "the A2L's layout");
-static_assert(offsetof(Signals, stop) == 112, "the A2L's layout");
-static_assert(offsetof(Signals, robot_state) == 113, "the A2L's layout");
-static_assert(offsetof(Signals, standby_off) == 114, "the A2L's layout");
-static_assert(offsetof(Signals, left_in1) == 115, "the A2L's layout");
-static_assert(offsetof(Signals, left_in2) == 116, "the A2L's layout");
-static_assert(offsetof(Signals, duty_percent) == 120, "the A2L's layout");
-static_assert(offsetof(Signals, speed_left_captured) == 124, "the A2L's layout");
-static_assert(offsetof(Signals, travelled_left) == 128, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_left) == 132, "the A2L's layout");
-static_assert(offsetof(Signals, speed_right_captured) == 136, "the A2L's layout");
-static_assert(offsetof(Signals, travelled_right) == 140, "the A2L's layout");
-static_assert(offsetof(Signals, wheel_speed_right) == 144, "the A2L's layout");
-static_assert(offsetof(Signals, echo_captured) == 148, "the A2L's layout");
-static_assert(offsetof(Signals, distance) == 152, "the A2L's layout");
-static_assert(offsetof(Signals, adc_samples_received) == 156, "the A2L's layout");
-static_assert(offsetof(Signals, battery_voltage) == 356, "the A2L's layout");
-static_assert(offsetof(Signals, gains_in_use) == 360, "the A2L's layout");
-static_assert(offsetof(Signals, in_effect) == 372, "the A2L's layout");
-static_assert(offsetof(Signals, messages_received) == 376, "the A2L's layout");
-static_assert(offsetof(Signals, gains_received) == 380, "the A2L's layout");
-static_assert(offsetof(Signals, lqr_received) == 392, "the A2L's layout");
-static_assert(offsetof(Signals, linux_gains) == 396, "the A2L's layout");
-static_assert(sizeof(Signals) == 408);
+static_assert(offsetof(Signals, w) == 68, "the A2L's layout");
+static_assert(offsetof(Signals, error) == 72, "the A2L's layout");
+static_assert(offsetof(Signals, gains_from) == 76, "the A2L's layout");
+static_assert(offsetof(Signals, p_gain) == 80, "the A2L's layout");
+static_assert(offsetof(Signals, i_gain) == 84, "the A2L's layout");
+static_assert(offsetof(Signals, d_gain) == 88, "the A2L's layout");
+static_assert(offsetof(Signals, controller) == 92, "the A2L's layout");
+static_assert(offsetof(Signals, y_pid) == 96, "the A2L's layout");
+static_assert(offsetof(Signals, position) == 100, "the A2L's layout");
+static_assert(offsetof(Signals, speed) == 104, "the A2L's layout");
+static_assert(offsetof(Signals, y_lqr) == 108, "the A2L's layout");
+static_assert(offsetof(Signals, y) == 112, "the A2L's layout");
+static_assert(offsetof(Signals, stop) == 116, "the A2L's layout");
+static_assert(offsetof(Signals, robot_state) == 117, "the A2L's layout");
+static_assert(offsetof(Signals, standby_off) == 118, "the A2L's layout");
+static_assert(offsetof(Signals, left_in1) == 119, "the A2L's layout");
+static_assert(offsetof(Signals, left_in2) == 120, "the A2L's layout");
+static_assert(offsetof(Signals, duty_percent) == 124, "the A2L's layout");
+static_assert(offsetof(Signals, speed_left_captured) == 128, "the A2L's layout");
+static_assert(offsetof(Signals, travelled_left) == 132, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_left) == 136, "the A2L's layout");
+static_assert(offsetof(Signals, speed_right_captured) == 140, "the A2L's layout");
+static_assert(offsetof(Signals, travelled_right) == 144, "the A2L's layout");
+static_assert(offsetof(Signals, wheel_speed_right) == 148, "the A2L's layout");
+static_assert(offsetof(Signals, echo_captured) == 152, "the A2L's layout");
+static_assert(offsetof(Signals, distance) == 156, "the A2L's layout");
+static_assert(offsetof(Signals, adc_samples_received) == 160, "the A2L's layout");
+static_assert(offsetof(Signals, battery_voltage) == 360, "the A2L's layout");
+static_assert(offsetof(Signals, gains_in_use) == 364, "the A2L's layout");
+static_assert(offsetof(Signals, in_effect) == 376, "the A2L's layout");
+static_assert(offsetof(Signals, messages_received) == 380, "the A2L's layout");
+static_assert(offsetof(Signals, gains_received) == 384, "the A2L's layout");
+static_assert(offsetof(Signals, lqr_received) == 396, "the A2L's layout");
+static_assert(offsetof(Signals, linux_gains) == 400, "the A2L's layout");
+static_assert(sizeof(Signals) == 412);
 
 Parameters parameters{
     .P = 0.3F,
@@ -94,6 +97,8 @@ Parameters parameters{
     .D = 0.06F,
     .N = 28.234F,
     .target = 0.0F,
+    .speed_gain = 4.0F,
+    .position_gain = 2.0F,
     .stop_angle = 60.0F,
     .use_lqr = false,
     .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
@@ -109,6 +114,8 @@ const Parameters reference_parameters{
     .D = 0.06F,
     .N = 28.234F,
     .target = 0.0F,
+    .speed_gain = 4.0F,
+    .position_gain = 2.0F,
     .stop_angle = 60.0F,
     .use_lqr = false,
     .K = {-1.872988F, -4.5247526F, 14.470122F, 1.711487F},
@@ -280,8 +287,6 @@ void step_rate_1() {
   // estimates (Demux)
   signals.theta = signals.estimate[0];
   signals.theta_rate = signals.estimate[1];
-  // compare (Sum)
-  signals.error = duet::blocks::subtract(p.target, signals.theta);
   // lqr_tuned_number (Convert)
   float lqr_number{};
   lqr_number = duet::blocks::convert<float>(p.use_lqr);
@@ -371,8 +376,18 @@ void step_rate_1() {
   wheels_sum = duet::blocks::add(position_left, position_right);
   // halve (Gain)
   signals.position = duet::blocks::gain(wheels_sum, 0.5F);
+  // position_term (Gain)
+  float w_position{};
+  w_position = duet::blocks::gain(signals.position, p.position_gain);
   // velocity (FilteredDerivative)
   signals.speed = state.velocity.output(signals.position, 1.0F, 20.0F);
+  // speed_term (Gain)
+  float w_speed{};
+  w_speed = duet::blocks::gain(signals.speed, p.speed_gain);
+  // outer_loop (Sum)
+  signals.w = duet::blocks::add(duet::blocks::add(p.target, w_speed), w_position);
+  // compare (Sum)
+  signals.error = duet::blocks::subtract(signals.w, signals.theta);
   // state (Mux)
   float state_vector[4]{};
   state_vector[0] = signals.position;

@@ -34,6 +34,8 @@ struct Parameters {
   float D;
   float N;
   float target;
+  float speed_gain;
+  float position_gain;
   float stop_angle;
   bool use_lqr;
   float K[4];
@@ -55,6 +57,8 @@ inline constexpr Limits I{-20, 20};
 inline constexpr Limits D{-1, 1};
 inline constexpr Limits N{0, 1000};
 inline constexpr Limits target{-20, 20};
+inline constexpr Limits speed_gain{0, 20};
+inline constexpr Limits position_gain{0, 20};
 inline constexpr Limits stop_angle{0, 90};
 }  // namespace parameter_limits
 
@@ -79,6 +83,7 @@ struct Signals {
   float estimate[2];
   float theta;
   float theta_rate;
+  float w;
   float error;
   bool gains_from;
   float p_gain;

@@ -24,7 +24,7 @@ inline constexpr std::uint32_t epk_address = 262144;
 
 // The EPK: this generation of the model, as the A2L's MOD_PAR says it; a master uploads it from epk_address
 // (or asks GET_ID) to know that it talks to the firmware the A2L describes.
-inline constexpr char epk[] = "balbot 8f03dc3325642224";
+inline constexpr char epk[] = "balbot 7ceb68251c668046";
 
 // The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).
 inline constexpr std::uint8_t max_cto = 248;
