@@ -55,17 +55,20 @@ ExitCode run_monitor(const MonitorCommandOptions& options, Streams streams) {
     plant_control = dashboard::PlantControlAddress{control.host, control.port};
   }
 
+  // Member by member: GCC 12 at -O3 takes the strings of a designated initializer for uninitialised.
+  monitor::MonitorOptions monitor_options;
+  monitor_options.target = target;
+  monitor_options.a2l = std::move(a2l).value();
+  monitor_options.signals = options.signals;
+  monitor_options.event = options.event;
+  monitor_options.server.address = listen.host;
+  monitor_options.server.port = listen.port;
+  monitor_options.server.web_root = options.web;
+  monitor_options.server.log_name = "duet monitor";
+  monitor_options.plant_control = plant_control;
+  monitor_options.timeout_ms = options.timeout_ms;
   boost::asio::io_context io;
-  auto monitor = monitor::MonitorTarget::create(
-      io,
-      monitor::MonitorOptions{
-          .target = target,
-          .a2l = std::move(a2l).value(),
-          .signals = options.signals,
-          .event = options.event,
-          .server = {.address = listen.host, .port = listen.port, .web_root = options.web, .log_name = "duet monitor"},
-          .plant_control = plant_control,
-          .timeout_ms = options.timeout_ms});
+  auto monitor = monitor::MonitorTarget::create(io, std::move(monitor_options));
   if (!monitor) return fail(streams, monitor.error());
   StopSignals stop;
   if (Status started = monitor.value()->start(); !started) return fail(streams, started.error());
