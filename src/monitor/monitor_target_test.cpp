@@ -187,10 +187,11 @@ TEST(MonitorTargetPlant, WithAPlantControlEndpointThePageMayPushThePlant) {
   ASSERT_TRUE(plant.listening());
   boost::asio::io_context io;
   const Endpoint nobody{Protocol::tcp, "127.0.0.1", 1};  // the plant is there whether the target is or not
-  auto monitor =
-      MonitorTarget::create(io, {.target = nobody,
-                                 .a2l = TestTarget::a2l(nobody),
-                                 .plant_control = dashboard::PlantControlAddress{plant.host(), plant.port()}});
+  MonitorOptions options;  // member by member: GCC 12 at -O3 takes a designated initializer's strings for uninitialised
+  options.target = nobody;
+  options.a2l = TestTarget::a2l(nobody);
+  options.plant_control = dashboard::PlantControlAddress{plant.host(), plant.port()};
+  auto monitor = MonitorTarget::create(io, std::move(options));
   ASSERT_TRUE(monitor.ok());
   ASSERT_TRUE(monitor.value()->start().ok());
   std::thread serving{[&io] { io.run(); }};
