@@ -93,10 +93,9 @@ void bytes_to(std::span<const double> bytes, T& value) {
 }
 
 // Bit for bit, so that a NaN written over XCP counts as the same value each time.
+bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
 bool same_bits(const Settings& a, const Settings& b) {
-  return std::bit_cast<std::uint32_t>(a.p) == std::bit_cast<std::uint32_t>(b.p) &&
-         std::bit_cast<std::uint32_t>(a.i) == std::bit_cast<std::uint32_t>(b.i) &&
-         std::bit_cast<std::uint32_t>(a.d) == std::bit_cast<std::uint32_t>(b.d) && a.use_lqr == b.use_lqr;
+  return same_bits(a.p, b.p) && same_bits(a.i, b.i) && same_bits(a.d, b.d) && a.use_lqr == b.use_lqr;
 }
 
 // The channel's P, I, D and controller follow what the model uses, so that a write over XCP shows on Linux's side
@@ -107,9 +106,7 @@ void show_the_settings_in_use() {
   {
     const cortex_m::InterruptMask masked;
     if (!same_bits(settings, settings_sent) || same_bits(settings, in_use)) return;
-    changed = {std::bit_cast<std::uint32_t>(settings.p) != std::bit_cast<std::uint32_t>(in_use.p),
-               std::bit_cast<std::uint32_t>(settings.i) != std::bit_cast<std::uint32_t>(in_use.i),
-               std::bit_cast<std::uint32_t>(settings.d) != std::bit_cast<std::uint32_t>(in_use.d),
+    changed = {!same_bits(settings.p, in_use.p), !same_bits(settings.i, in_use.i), !same_bits(settings.d, in_use.d),
                settings.use_lqr != in_use.use_lqr};
     settings = in_use;
     settings_sent = in_use;
