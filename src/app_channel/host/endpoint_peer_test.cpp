@@ -27,6 +27,17 @@ struct Robot {
   std::int8_t mode = 0;
 };
 
+// The firmware's end of an application, with the queue and buffers it needs.
+struct FirmwareEnd {
+  explicit FirmwareEnd(const Application& application)
+      : endpoint{application, queue, {}, decoder_buffer, packet_buffer} {}
+  std::array<std::uint8_t, 512> ring{};
+  xcp::TransmitQueue queue{ring, {}};
+  std::array<std::uint8_t, decoder_buffer_size> decoder_buffer{};
+  std::array<std::uint8_t, max_packet> packet_buffer{};
+  Endpoint endpoint;
+};
+
 class AppChannel : public ::testing::Test {
  protected:
   // Firmware -> PC until nothing is left, through a line that takes `line_size` bytes at a time (the framer sends
@@ -48,11 +59,8 @@ class AppChannel : public ::testing::Test {
   const std::array<Item, 4> parameters{item("P", "", robot.p, 0, 1), item("I", "", robot.i, 0, 1),
                                        item("D", "", robot.d, 0, 1), item("mode", "", robot.mode, -1, 3)};
   const Application application{"balbot", 10000, telemetry, parameters};
-  std::array<std::uint8_t, 512> ring{};
-  xcp::TransmitQueue queue{ring, {}};
-  std::array<std::uint8_t, decoder_buffer_size> decoder_buffer{};
-  std::array<std::uint8_t, max_packet> packet_buffer{};
-  Endpoint endpoint{application, queue, {}, decoder_buffer, packet_buffer};
+  FirmwareEnd firmware{application};
+  Endpoint& endpoint = firmware.endpoint;
 
   std::vector<Description> descriptions;
   std::vector<Sample> samples;
@@ -277,15 +285,11 @@ TEST(AppChannelLabels, NamedValuesArriveWithTheirNames) {
   const std::array<Item, 1> telemetry{named_item("state", state, state_names)};
   const std::array<Item, 1> parameters{named_item("controller", controller, controller_names)};
   const Application application{"robot", 10000, telemetry, parameters};
-  std::array<std::uint8_t, 512> ring{};
-  xcp::TransmitQueue queue{ring, {}};
-  std::array<std::uint8_t, decoder_buffer_size> decoder_buffer{};
-  std::array<std::uint8_t, max_packet> packet_buffer{};
-  Endpoint endpoint{application, queue, {}, decoder_buffer, packet_buffer};
+  FirmwareEnd firmware{application};
   std::vector<Description> descriptions;
   Peer peer{{.description = [&](const Description& d) { descriptions.push_back(d); }}};
   std::array<std::uint8_t, 256> line{};
-  while (const std::size_t sent = endpoint.transmit(line)) peer.receive(std::span{line}.first(sent));
+  while (const std::size_t sent = firmware.endpoint.transmit(line)) peer.receive(std::span{line}.first(sent));
   ASSERT_EQ(descriptions.size(), 1U);
   EXPECT_EQ(descriptions[0].telemetry[0].labels, (std::vector<std::string>{"initialising", "balancing", "stopped"}));
   EXPECT_DOUBLE_EQ(descriptions[0].telemetry[0].maximum, 2);
