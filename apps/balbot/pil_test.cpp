@@ -117,7 +117,7 @@ TEST(BalbotPil, TenSecondsOnTheEmulatedCortexM4BalanceWithoutOverrunsAndMatchThe
 }
 
 // DAQ timestamps are the executive's time: the 1 ms task's samples, recorded over XCP through the bridge, advance by
-// 1 ms on average to within 0.01 %, although the plant link pauses the emulated timers at every exchange.
+// 1 ms on average to within 0.01 %, although the plant link sets its cycles aside at every exchange.
 TEST(BalbotPil, DaqTimestampsOfTheMillisecondTaskAdvanceByItsPeriod) {
   if (!std::filesystem::exists(BALBOT_PIL_FIRMWARE)) GTEST_SKIP() << "no firmware image " << BALBOT_PIL_FIRMWARE;
   Program pil{DUET_PROGRAM,

@@ -35,17 +35,4 @@ void CmsdkTimer::start_free_running() const {
 
 void CmsdkTimer::stop() const { register32(base_ + control) = 0; }
 
-bool CmsdkTimer::pause() const {
-  const std::uint32_t settings = register32(base_ + control);
-  register32(base_ + control) = settings & ~enable;
-  return (settings & enable) != 0;
-}
-
-// Paused at 0, the counter has interrupted and would reload on its next cycle; QEMU's model cannot restart from 0
-// (it prints "Timer with delta zero, disabling" and stops), so it restarts from the reload value: one cycle early.
-void CmsdkTimer::resume() const {
-  if (register32(base_ + current_value) == 0) register32(base_ + current_value) = register32(base_ + reload);
-  register32(base_ + control) = register32(base_ + control) | enable;
-}
-
 }  // namespace duet::mps2_an386

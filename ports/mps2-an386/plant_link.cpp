@@ -13,34 +13,42 @@ namespace semihosting = cortex_m::semihosting;
 
 }  // namespace
 
-// Interrupts masked and the executive's time held for as long as it exists.
-class PlantLink::TimeHeld {
+// Interrupts masked and the cycles counted as the link's for as long as it exists.
+class PlantLink::LinkSection {
  public:
-  TimeHeld() : saved_primask_(cortex_m::mask_interrupts()), timers_(ExecutivePort::hold_time()) {}
-  ~TimeHeld() {
-    ExecutivePort::resume_time(timers_);
+  LinkSection() : saved_primask_(cortex_m::mask_interrupts()), started_(ExecutivePort::cycles()) {}
+  ~LinkSection() {
+    count();
     cortex_m::restore_interrupts(saved_primask_);
   }
-  TimeHeld(const TimeHeld&) = delete;
-  TimeHeld& operator=(const TimeHeld&) = delete;
+  LinkSection(const LinkSection&) = delete;
+  LinkSection& operator=(const LinkSection&) = delete;
 
-  // Lets time run and interrupts in while `run` does, then holds them again.
+  // Lets interrupts in while `run` does, its cycles not the link's, then masks them again.
   template <typename Function>
   void release_while(Function run) {
-    ExecutivePort::resume_time(timers_);
+    count();
     cortex_m::enable_interrupts();
     run();
     cortex_m::disable_interrupts();
-    timers_ = ExecutivePort::hold_time();
+    started_ = ExecutivePort::cycles();
   }
 
  private:
+  void count() const { cycles_spent_ += ExecutivePort::cycles() - started_; }
+
   std::uint32_t saved_primask_;
-  ExecutivePort::HeldTimers timers_;
+  std::uint32_t started_;
 };
 
+// Masked: the link may count cycles between the two reads, from a handler that preempts the caller.
+std::uint32_t PlantLinkedPort::cycles() {
+  const CriticalSection masked;
+  return ExecutivePort::cycles() - PlantLink::cycles_spent();
+}
+
 bool PlantLink::connect(std::string_view to_plant, std::string_view from_plant, std::uint32_t base_period_ns) {
-  const TimeHeld held;
+  const LinkSection section;
   // The plant holds its ends open, so neither open waits; this order matches the plant's in any case.
   to_plant_ = semihosting::open(to_plant, semihosting::FileMode::write_binary);
   from_plant_ = semihosting::open(from_plant, semihosting::FileMode::read_binary);
@@ -60,7 +68,7 @@ bool PlantLink::connect(std::string_view to_plant, std::string_view from_plant, 
 
 void PlantLink::write(std::string_view resource, std::span<const double> values) {
   if (!ok()) return;
-  const TimeHeld held;
+  const LinkSection section;
   const std::span<const std::uint8_t> frame = link::encode_write(frame_, resource, values);
   if (frame.empty()) return fail("a WRITE too long for the link's buffer: ", resource);
   send(frame);
@@ -69,7 +77,7 @@ void PlantLink::write(std::string_view resource, std::span<const double> values)
 void PlantLink::read(std::string_view resource, std::span<double> values) {
   for (double& value : values) value = 0.0;
   if (!ok()) return;
-  const TimeHeld held;
+  const LinkSection section;
   const std::span<const std::uint8_t> frame =
       link::encode_read(frame_, resource, static_cast<std::uint16_t>(values.size()));
   if (frame.empty() || values.size() > link::max_read_values) return fail("a READ too long for the link: ", resource);
@@ -84,7 +92,7 @@ void PlantLink::read(std::string_view resource, std::span<double> values) {
 
 void PlantLink::tick(double time_s) {
   if (!ok()) return;
-  TimeHeld held;
+  LinkSection section;
   send(link::encode_tick(frame_, time_s));
   while (receive()) {
     if (decoder_.kind() == FrameKind::tick_done) return;
@@ -93,25 +101,25 @@ void PlantLink::tick(double time_s) {
         link::parse(decoder_.payload(), interrupt) != link::FrameError::none) {
       return fail("the plant sent something else than INTERRUPT or TICK_DONE during a TICK");
     }
-    if (!raise(interrupt.name, held)) return;
+    if (!raise(interrupt.name, section)) return;
     send(link::encode_empty(frame_, FrameKind::interrupt_done));
   }
 }
 
 void PlantLink::bye() {
   if (!ok()) return;
-  const TimeHeld held;
+  const LinkSection section;
   send(link::encode_empty(frame_, FrameKind::bye));
   flush();
 }
 
-// Lets the interrupt's task run: time resumes and interrupts are unmasked for as long as it takes, which is at once
+// Lets the interrupt's task run: its cycles count and interrupts are unmasked for as long as it takes, which is at once
 // and to its end, since the task is more urgent than whoever ticks. The task's own READ and WRITE frames go out
 // meanwhile, as the protocol wants them: before INTERRUPT_DONE.
-bool PlantLink::raise(std::string_view name, TimeHeld& held) {
+bool PlantLink::raise(std::string_view name, LinkSection& section) {
   for (const PlantInterrupt& interrupt : plant_interrupts) {
     if (interrupt.name != name) continue;
-    held.release_while([line = interrupt.line] {
+    section.release_while([line = interrupt.line] {
       cortex_m::set_interrupt_pending(line);
       asm volatile("isb" ::: "memory");  // the pended interrupt is taken here
     });

@@ -40,7 +40,7 @@ constexpr unsigned console_uart = 3;
 constexpr std::size_t task_capacity = std::size(balbot::tasks);
 
 // The board's executive port, plus DAQ after every task and the console's report between ticks.
-class RobotPort : public board::ExecutivePort {
+class RobotPort : public board::PlantLinkedPort {
  public:
   void task_finished(std::size_t task) { firmware::on_task_finished(task); }
   void idle();
@@ -64,19 +64,19 @@ std::array<std::uint8_t, board::device_interrupt_count> task_of_line = [] {
 // Spins, as the board's port does: under QEMU's -icount,sleep=off a core sleeping in WFI misses every other tick
 // of the base timer (measured: 50,000 cycles of the 25 MHz timer per 1 ms tick instead of 25,000, so the core load
 // read half of what it is). At shift=2 a millisecond is 250,000 instructions, most of them this loop's: QEMU
-// translates a NOP to nothing but the count, so a round of 64 of them costs it about what the loop's few other
-// instructions cost, and the idle millisecond 0.1 ms of wall time instead of 0.33 (docs/LINK.md, "Pacing"). The
-// executive measures tasks by the timer, so the core load does not depend on what idling executes.
+// translates a NOP to nothing but the count, so a round of 512 of them costs it about what the loop's few other
+// instructions cost, and the idle millisecond far less wall time than a tight loop (0.33 ms; docs/LINK.md, "Pacing").
+// The executive measures tasks by the timer, so the core load does not depend on what idling executes.
 void RobotPort::idle() {
   report.between_ticks(executive);
   // Inline, so that a round needs no return (an indirect jump QEMU looks up in its tables: 0.5 to 0.75 of a
   // processor for QEMU's thread against 0.45 to 0.65 inline); written out rather than .rept, which GCC would count
   // as one instruction when it sizes the branches around it.
-  asm volatile(
-      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
-      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
-      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
-      "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n");
+#define BALBOT_NOP8 "nop\n nop\n nop\n nop\n nop\n nop\n nop\n nop\n"
+#define BALBOT_NOP64 BALBOT_NOP8 BALBOT_NOP8 BALBOT_NOP8 BALBOT_NOP8 BALBOT_NOP8 BALBOT_NOP8 BALBOT_NOP8 BALBOT_NOP8
+  asm volatile(BALBOT_NOP64 BALBOT_NOP64 BALBOT_NOP64 BALBOT_NOP64 BALBOT_NOP64 BALBOT_NOP64 BALBOT_NOP64 BALBOT_NOP64);
+#undef BALBOT_NOP64
+#undef BALBOT_NOP8
 }
 
 // Every interrupt task comes from the plant, on a plant line, more urgent than the base rate: the plant link runs it

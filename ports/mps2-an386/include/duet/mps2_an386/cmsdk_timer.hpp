@@ -16,10 +16,6 @@ class CmsdkTimer {
   // Counts down from 2^32 - 1 without interrupts, wrapping: a free-running clock of the peripheral clock.
   void start_free_running() const;
   void stop() const;
-  // Stops the count where it stands, keeping the reload value and the interrupt enable; true if it was running.
-  [[nodiscard]] bool pause() const;
-  // Restarts a count that pause() stopped.
-  void resume() const;
 
   // The counter: counts down by one per peripheral clock cycle.
   [[nodiscard]] std::uint32_t value() const { return cortex_m::register32(base_ + value_offset); }

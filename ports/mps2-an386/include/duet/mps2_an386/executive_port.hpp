@@ -30,7 +30,7 @@ class ExecutivePort {
   // nothing enabled, if the model has more rates than there are software interrupts for them.
   [[nodiscard]] static bool configure(const rt::ModelDescription& model);
 
-  [[nodiscard]] std::uint32_t cycles() const { return ~cycle_counter.value(); }  // it counts down
+  [[nodiscard]] static std::uint32_t cycles() { return ~cycle_counter.value(); }  // it counts down
   void start_base_timer(std::uint32_t period_ns);
   void stop_base_timer();
   [[nodiscard]] bool base_tick_pending() const { return cortex_m::interrupt_pending(timer0_interrupt); }
@@ -38,19 +38,6 @@ class ExecutivePort {
   void trigger_rate(std::size_t rate) { cortex_m::set_interrupt_pending(rate_interrupt(rate)); }
   // Spins: under QEMU's -icount, sleeping in WFI merges timer interrupts.
   void idle() {}
-
-  // Time stands still for the executive between hold_time() and resume_time(): the base timer's countdown and the
-  // cycle counter pause where they are. The plant link holds time while it talks to the simulated plant, so that
-  // the firmware never sees how long the emulator took to reach the plant (plant_link.hpp).
-  struct HeldTimers {
-    bool base_timer = false;  // each true if it was running
-    bool cycle_counter = false;
-  };
-  [[nodiscard]] static HeldTimers hold_time() { return {base_timer.pause(), cycle_counter.pause()}; }
-  static void resume_time(HeldTimers held) {
-    if (held.cycle_counter) cycle_counter.resume();
-    if (held.base_timer) base_timer.resume();
-  }
 
   // The base timer handler's first act: the timer keeps its interrupt raised until it is acknowledged.
   static void acknowledge_base_tick() {
@@ -60,9 +47,8 @@ class ExecutivePort {
 
   // The executive's time in microseconds (wrapping as a 32-bit count does, every 72 minutes): the base ticks so far
   // times the period, plus how far the base timer has counted into the current one. DAQ stamps samples with it, so a
-  // periodic task's timestamps advance by exactly its period. The cycle counter cannot give that under QEMU: pausing
-  // and restarting two timers while the plant link holds time leaves them a few cycles apart at every hold (0.02 to
-  // 0.2 % over a run). Interrupt-safe.
+  // periodic task's timestamps advance by exactly its period. Not the cycle count that an image with a plant link
+  // gives the executive, which leaves out the link's cycles (plant_link.hpp). Interrupt-safe.
   [[nodiscard]] static std::uint32_t executive_microseconds();
 
  private:

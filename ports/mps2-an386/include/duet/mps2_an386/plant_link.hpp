@@ -10,10 +10,13 @@
 // sent, so that a tick costs the host a pipe write and a read per round trip rather than one per frame: each write
 // woke the plant's thread, which is what a real-time run spends its wall time on (docs/LINK.md, "Pacing").
 //
-// While it talks to the plant the link masks interrupts and holds the executive's time (ExecutivePort::hold_time),
-// so the firmware sees its plant as it would see registers: the instructions that encode and decode frames are not
-// counted in the execution times the executive measures. How fast the plant answers (at once: lock-step; at the
-// wall clock's pace: real time) is the plant's business; the firmware's run is the same either way.
+// While it talks to the plant the link masks interrupts and counts its own cycles apart, and PlantLinkedPort's cycle
+// count leaves them out: the firmware sees its plant as it would see registers, the instructions that encode and
+// decode frames are not counted in the execution times the executive measures. The timers run on (the link's own
+// instructions are a few hundred a tick): pausing and restarting them at every exchange, as the link did before, was
+// two timers for QEMU to reschedule each time, a good part of a paced tick's wall time (docs/LINK.md, "Pacing"). A blocking semihosting call takes no emulated time under
+// -icount, so how fast the plant answers (at once: lock-step; at the wall clock's pace: real time) is the plant's
+// business; the firmware's run is the same either way.
 //
 // Freestanding. A failure (garbage, an ERROR from the plant, the pipe closed) is kept: from then on the calls do
 // nothing, reads give zeros, and error() says what happened.
@@ -26,6 +29,7 @@
 #include "duet/base/text_buffer.hpp"
 #include "duet/link/frame.hpp"
 #include "duet/link/frame_decoder.hpp"
+#include "duet/mps2_an386/executive_port.hpp"
 
 namespace duet::mps2_an386 {
 
@@ -47,6 +51,9 @@ class PlantLink {
   void bye();
 
   [[nodiscard]] bool ok() const { return error_.view().empty(); }
+
+  // The cycles spent in the link so far, by all links (wrapping as the cycle counter does).
+  [[nodiscard]] static std::uint32_t cycles_spent() { return cycles_spent_; }
   [[nodiscard]] std::string_view error() const { return error_.view(); }
 
  private:
@@ -56,7 +63,7 @@ class PlantLink {
   // Frames waiting to go out: a tick's WRITEs (some 11 for the robot, 30 bytes each) and the frame that waits.
   static constexpr std::size_t outgoing_capacity = 2048;
 
-  class TimeHeld;
+  class LinkSection;
   // Queues a frame; it goes out with the next flush().
   void send(std::span<const std::uint8_t> frame);
   void flush();
@@ -66,9 +73,10 @@ class PlantLink {
   // Reads what the plant has sent (at least a byte, waiting for it) into `incoming_`; false at the pipe's end.
   bool read_more();
   bool expect(link::FrameKind kind);
-  bool raise(std::string_view name, TimeHeld& held);
+  bool raise(std::string_view name, LinkSection& section);
   void fail(std::string_view what, std::string_view detail = {});
 
+  static inline std::uint32_t cycles_spent_ = 0;
   int to_plant_ = -1;
   int from_plant_ = -1;
   link::BasicFrameDecoder<max_received_payload> decoder_;
@@ -79,6 +87,13 @@ class PlantLink {
   std::size_t incoming_begin_ = 0;  // the bytes from here to incoming_end_ are not decoded yet
   std::size_t incoming_end_ = 0;
   TextBuffer<160> error_;
+};
+
+// The executive's port for an image with a plant link: its cycle count leaves out the cycles the link spent talking
+// to the plant.
+class PlantLinkedPort : public ExecutivePort {
+ public:
+  [[nodiscard]] static std::uint32_t cycles();
 };
 
 }  // namespace duet::mps2_an386
