@@ -55,6 +55,21 @@ bool has_state(const std::string& type) {
          type == "StateSpace" || type == "MovingAverage" || type == "KalmanFilter";
 }
 
+// The compile-time value of the resource a hardware block names (duet/hardware/resources.hpp), or nothing for a pin
+// (a Pin constant of its own), a simulation's plant resource and every other block.
+std::string hardware_resource_value(const ProgramBlock& block) {
+  const auto text = [&block](const char* name) { return block.argument(name)->text; };
+  const auto quoted = [&](const char* name) { return "\"" + text(name) + "\""; };
+  const std::string& type = block.type();
+  if (type == "PwmOut") return "duet::hardware::pwm(" + quoted("timer") + ", " + text("channel") + ")";
+  if (type == "InputCapture") return "duet::hardware::capture(" + quoted("timer") + ", " + text("channel") + ")";
+  if (type == "SpiDma" || type == "SpiReceive") return "duet::hardware::spi(" + quoted("spi") + ")";
+  if (type == "AdcStart" || type == "AdcDma") return "duet::hardware::adc(" + quoted("adc") + ", " + text("channel") + ")";
+  if (type == "Exti") return "duet::hardware::exti(" + quoted("line") + ")";
+  if (type == "IpcSend" || type == "IpcReceive") return "duet::hardware::ipc(" + quoted("channel") + ")";
+  return {};
+}
+
 }  // namespace
 
 bool Generator::has_state_member(const ProgramBlock& block) {
@@ -289,6 +304,9 @@ std::string Generator::block_constants() const {
     if (block.type() == "GpioIn" || block.type() == "GpioOut") {
       text += "constexpr duet::hardware::Pin " + block.identifier + "_pin = duet::hardware::pin(\"" +
               block.argument("pin")->text + "\");\n";
+    }
+    if (const std::string resource = hardware_resource_value(block); !resource.empty()) {
+      text += "constexpr auto " + block.identifier + "_resource = " + resource + ";\n";
     }
     const bool matrices = block.type() == "TransferFunction" || block.type() == "StateSpace" ||
                           block.type() == "KalmanFilter" || block.type() == "StateFeedback";
@@ -731,8 +749,10 @@ std::string Generator::code_call(const ProgramBlock& block) const {
   return text + "  }\n";
 }
 
-// Hardware blocks: a pin through gpio_write/gpio_read, anything else through the port's resource calls as doubles,
-// element by element, as the interpreter hands them to the plant.
+// Hardware blocks: each kind through its typed call in the port (duet/hardware/hardware.hpp), with the resource a
+// compile-time template argument (block_constants), and values in the kind's own type: bytes, sample counts, a float
+// duty. A signal of another type is converted into a local of the kind's type first. PlantInput and PlantOutput,
+// which exist for simulation, go to the plant by name as doubles.
 std::string Generator::hardware_output(const ProgramBlock& block) const {
   const std::string& type = block.type();
   if (type == "Outport" || hardware_resource(block).empty()) return {};  // or a block with its outputs unconnected
@@ -742,33 +762,71 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
   if (type == "GpioIn") {
     return "  " + element(block.outputs[0], "0") + " = duet::hardware::gpio_read(" + block.identifier + "_pin);\n";
   }
-  const std::string resource = "\"" + hardware_resource(block) + "\"";
-  if (type == "AdcStart") {  // starts a conversion of `count` samples
-    return "  {\n    const double count[] = {" + shortest(block.argument("count")->value.elements.at(0)) +
-           "};\n    duet::hardware::write(" + resource + ", count);\n  }\n";
+  if (type == "PlantInput" || type == "PlantOutput") return plant_resource_access(block);
+  const std::string resource = "<" + block.identifier + "_resource>";
+  if (type == "AdcStart") {
+    const auto count = static_cast<long long>(block.argument("count")->value.elements.at(0));
+    return "  duet::hardware::adc_start" + resource + "(std::uint16_t{" + std::to_string(count) + "});\n";
   }
+  if (type == "PwmOut") {
+    return "  duet::hardware::pwm_write" + resource + "(" + converted(block.inputs[0], DataType::float32) + ");\n";
+  }
+  if (type == "InputCapture") {
+    std::string text = "  {\n    const duet::hardware::CaptureReading reading = duet::hardware::capture_read" +
+                       resource + "();\n";
+    for (std::size_t k = 0; k < block.outputs.size(); ++k) {
+      text += "    " + element(block.outputs[k], "0") + " = reading." +
+              (block.output_ports[k] == "edge" ? "rising" : "count") + ";\n";
+    }
+    return text + "  }\n";
+  }
+  if (type == "Exti") return "  " + element(block.outputs[0], "0") + " = duet::hardware::exti_level" + resource + "();\n";
+  const bool sends = type == "SpiDma" || type == "IpcSend";
+  std::string text = "  {\n";
+  if (sends && !block.inputs.empty()) {
+    std::string bytes;
+    for (const std::size_t signal : block.inputs) {
+      for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
+        bytes += (bytes.empty() ? "" : ", ") + converted(signal, i, DataType::uint8);
+      }
+    }
+    text += "    const std::uint8_t written[] = {" + bytes + "};\n    duet::hardware::" +
+            (type == "SpiDma" ? "spi_transfer" : "ipc_send") + resource + "(written);\n";
+  }
+  if (!block.outputs.empty()) {
+    const std::size_t signal = block.outputs[0];  // bytes (SpiDma, SpiReceive, IpcReceive) or samples (AdcDma)
+    const char* call = type == "AdcDma" ? "adc_samples" : type == "IpcReceive" ? "ipc_receive" : "spi_received";
+    text += "    duet::hardware::" + std::string{call} + resource + "({" + pointer(signal) + ", " +
+            std::to_string(program_.signals[signal].type.elements()) + "});\n";
+  }
+  return text + "  }\n";
+}
+
+// A signal's element as `type`: as it is if it has that type already.
+std::string Generator::converted(std::size_t signal, std::size_t index, DataType type) const {
+  if (program_.signals[signal].type.type == type) return element(signal, index);
+  return "duet::blocks::convert<" + type_of(type) + ">(" + element(signal, index) + ")";
+}
+
+std::string Generator::converted(std::size_t signal, DataType type) const { return converted(signal, 0, type); }
+
+// PlantInput and PlantOutput: the plant's resource by name, values as doubles (the PC's port only).
+std::string Generator::plant_resource_access(const ProgramBlock& block) const {
+  const std::string resource = "\"" + hardware_resource(block) + "\"";
   std::string text = "  {\n";
   if (!block.inputs.empty()) {
     std::string values;
     for (const std::size_t signal : block.inputs) {
       for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
-        values +=
-            (values.empty() ? "" : ", ") + std::string{"duet::blocks::convert<double>("} + element(signal, i) + ")";
+        values += (values.empty() ? "" : ", ") + converted(signal, i, DataType::float64);
       }
     }
     text += "    const double written[] = {" + values + "};\n    duet::hardware::write(" + resource + ", written);\n";
-    if (block.outputs.empty()) return text + "  }\n";  // an SpiDma writes, then reads what came back
   }
-  std::size_t count = 0;
-  for (const std::size_t signal : block.outputs) count += program_.signals[signal].type.elements();
-  text += "    double values[" + std::to_string(count) + "]{};\n    duet::hardware::read(" + resource + ", values);\n";
-  std::size_t at = 0;
-  for (const std::size_t signal : block.outputs) {
-    const SignalType& type_of_signal = program_.signals[signal].type;
-    for (std::size_t i = 0; i < type_of_signal.elements(); ++i) {
-      text += "    " + element(signal, i) + " = duet::blocks::convert<" + type_of(type_of_signal.type) + ">(values[" +
-              std::to_string(at++) + "]);\n";
-    }
+  if (!block.outputs.empty()) {
+    const std::size_t signal = block.outputs[0];
+    text += "    duet::hardware::read(" + resource + ", {" + pointer(signal) + ", " +
+            std::to_string(program_.signals[signal].type.elements()) + "});\n";
   }
   return text + "  }\n";
 }

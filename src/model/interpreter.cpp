@@ -732,19 +732,28 @@ Compiled hardware(Compiler& c, const ProgramBlock& block) {
   for (std::size_t k = 0; k < block.inputs.size(); ++k) {
     input_counts.push_back(c.elements_in(block, k));
     written += input_counts.back();
+    // In the type the firmware's port takes (duet/hardware/hardware.hpp), so that the plant sees what it would get
+    // from generated code: a PWM duty as a float, what SPI and IPC send as bytes.
     inputs.push_back(with_type(c.type_in(block, k), [&](auto tag) -> std::function<double(std::size_t)> {
       using T = decltype(tag);
       const Operand<T> u = c.input<T>(block, k);
+      if (block.type() == "PwmOut") return [u](std::size_t i) { return static_cast<double>(blocks::convert<float>(u[i])); };
+      if (block.type() == "SpiDma" || block.type() == "IpcSend") {
+        return [u](std::size_t i) { return static_cast<double>(blocks::convert<std::uint8_t>(u[i])); };
+      }
       return [u](std::size_t i) { return blocks::convert<double>(u[i]); };
     }));
   }
   std::vector<std::function<void(const double*)>> outputs;
-  std::vector<std::size_t> output_counts;
+  std::vector<std::size_t> output_offsets;  // where each output's values start in what the plant gives
   std::size_t read = 0;
+  // An input capture reads [count, edge] whichever it uses, as the ports' capture_read() does.
+  const bool capture = block.type() == "InputCapture";
+  if (capture) read = 2;
   for (std::size_t k = 0; k < block.outputs.size(); ++k) {
     const std::size_t n = c.elements_out(block, k);
-    output_counts.push_back(n);
-    read += n;
+    output_offsets.push_back(capture ? (block.output_ports[k] == "edge" ? 1 : 0) : read);
+    if (!capture) read += n;
     outputs.push_back(with_type(c.type_out(block, k), [&](auto tag) -> std::function<void(const double*)> {
       using T = decltype(tag);
       T* y = c.output<T>(block, k);
@@ -755,7 +764,7 @@ Compiled hardware(Compiler& c, const ProgramBlock& block) {
   }
   auto to_plant = std::make_shared<std::vector<double>>(written);
   auto from_plant = std::make_shared<std::vector<double>>(read);
-  return {{[plant, resource, inputs, input_counts, to_plant, outputs, output_counts, from_plant] {
+  return {{[plant, resource, inputs, input_counts, to_plant, outputs, output_offsets, from_plant] {
              if (!inputs.empty()) {
                std::size_t at = 0;
                for (std::size_t k = 0; k < inputs.size(); ++k) {
@@ -765,11 +774,7 @@ Compiled hardware(Compiler& c, const ProgramBlock& block) {
              }
              if (!outputs.empty()) {
                plant->read(resource, *from_plant);
-               std::size_t at = 0;
-               for (std::size_t k = 0; k < outputs.size(); ++k) {
-                 outputs[k](from_plant->data() + at);
-                 at += output_counts[k];
-               }
+               for (std::size_t k = 0; k < outputs.size(); ++k) outputs[k](from_plant->data() + output_offsets[k]);
              }
            },
            {}},

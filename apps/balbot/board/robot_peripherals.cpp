@@ -74,28 +74,19 @@ constexpr std::array safe_pins{low(hardware::pin("PA12")),   // MTR_STBY
                                low(hardware::pin("PD14"))};  // MTRR_N
 constexpr std::array safe_timers{pwm_timer};
 
-// What the capture handlers took, as the model reads it: [count, edge] (1 rising, 0 falling).
-struct CaptureReading {
-  std::uint32_t count = 0;
-  bool rising = true;
-};
-CaptureReading left_hall, right_hall, echo;
+// What the capture handlers took, as the model reads it.
+hardware::CaptureReading left_hall, right_hall, echo;
 
-bool take(const chip::Timer& timer, unsigned channel, CaptureReading& reading, bool rising) {
+bool take(const chip::Timer& timer, unsigned channel, hardware::CaptureReading& reading, bool rising) {
   const chip::Capture capture = timer.take_capture(channel);
   if (!capture.captured) return false;
   reading = {capture.count, rising};
   return true;
 }
 
-void read_capture(const CaptureReading& reading, std::span<double> values) {
-  CaptureReading now;
-  {
-    const duet::cortex_m::InterruptMask masked;  // the capture's handler may preempt
-    now = reading;
-  }
-  if (!values.empty()) values[0] = static_cast<double>(now.count);
-  if (values.size() > 1) values[1] = now.rising ? 1.0 : 0.0;
+hardware::CaptureReading read_capture(const hardware::CaptureReading& reading) {
+  const duet::cortex_m::InterruptMask masked;  // the capture's handler may preempt
+  return reading;
 }
 
 void start_clocks() {
@@ -134,17 +125,6 @@ void start_pins() {
   }
 }
 
-// A resource the robot's board has not: the model names a peripheral this configuration does not route. Said once in
-// the log, since it repeats every step.
-void unknown_resource(std::string_view resource) {
-  static bool said = false;
-  if (said) return;
-  said = true;
-  duet::cortex_m::console_write("balbot: the model uses a resource this board does not route: ");
-  duet::cortex_m::console_write(resource);
-  duet::cortex_m::console_write("\n");
-}
-
 bool start_imu_bus() { return imu_bus.start(chip::spi5_kernel_clock_hz, imu_clock_hz); }
 bool start_battery_adc() {
   return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz);
@@ -152,28 +132,27 @@ bool start_battery_adc() {
 
 // The model's SpiDma block: one transaction, chip select low for its length. A transfer still running refuses the
 // new one (HAL_BUSY in the thesis; the simulated robot refuses it too).
-void start_imu_transfer(std::span<const double> values) {
-  std::array<std::uint8_t, imu_transfer_capacity> bytes{};
-  const std::size_t count = values.size() < bytes.size() ? values.size() : bytes.size();
-  for (std::size_t k = 0; k < count; ++k) bytes[k] = static_cast<std::uint8_t>(values[k]);
+void start_imu_transfer(std::span<const std::uint8_t> bytes) {
   // Masked: a task of another priority may start one too, and must see this one whole or not at all.
   const duet::cortex_m::InterruptMask masked;
-  if (count == 0 || imu_bus.busy()) return;
+  if (bytes.empty() || imu_bus.busy()) return;
   imu_read_transfer = (bytes[0] & mpu6500_read) != 0;
   hardware::gpio_write(imu_chip_select, false);
-  if (!imu_bus.transfer(std::span{bytes}.first(count))) hardware::gpio_write(imu_chip_select, true);
+  if (!imu_bus.transfer(bytes.first(bytes.size() < imu_transfer_capacity ? bytes.size() : imu_transfer_capacity))) {
+    hardware::gpio_write(imu_chip_select, true);
+  }
 }
 
 // What a driver's DMA buffer holds, as the model reads it: zeros beyond it.
 template <typename Element>
-void read_buffer(std::span<const Element> buffer, std::span<double> values) {
-  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < buffer.size() ? buffer[k] : 0.0;
+void read_buffer(std::span<const Element> buffer, std::span<Element> values) {
+  for (std::size_t k = 0; k < values.size(); ++k) values[k] = k < buffer.size() ? buffer[k] : Element{0};
 }
 
 // The model's AdcStart block: `count` conversions, ignored while a sequence runs (as the simulated robot does).
-void start_battery_samples(double count) {
-  if (!(count >= 1.0 && count <= static_cast<double>(battery_sample_capacity))) return;
-  (void)battery_adc.start(static_cast<std::uint32_t>(count));
+void start_battery_samples(std::uint16_t count) {
+  if (count < 1 || count > battery_sample_capacity) return;
+  (void)battery_adc.start(count);
 }
 
 bool start_timers() {
@@ -235,41 +214,42 @@ bool on_imu_data_ready() {
 
 namespace duet::hardware {
 
-void write(std::string_view resource, std::span<const double> values) {
-  using namespace balbot::board;
-  const double value = values.empty() ? 0.0 : values[0];
-  if (resource == "pwm:TIM1/3") {
-    (void)pwm_timer.set_duty(right_pwm_channel, static_cast<float>(value));
-  } else if (resource == "pwm:TIM1/4") {
-    (void)pwm_timer.set_duty(left_pwm_channel, static_cast<float>(value));
-  } else if (resource == "spi:SPI5") {
-    start_imu_transfer(values);
-  } else if (resource == "adc:ADC1/6") {
-    start_battery_samples(value);
-  } else if (resource == "ipc:app") {
-    balbot::firmware::send_to_linux(values);
-  } else {
-    unknown_resource(resource);
-  }
-}
+using namespace balbot::board;
 
-void read(std::string_view resource, std::span<double> values) {
-  using namespace balbot::board;
-  if (resource == "capture:TIM2/1") {
-    read_capture(left_hall, values);
-  } else if (resource == "capture:TIM4/4") {
-    read_capture(right_hall, values);
-  } else if (resource == "capture:TIM5/2") {
-    read_capture(echo, values);
-  } else if (resource == "spi:SPI5") {
-    read_buffer(imu_bus.received(), values);
-  } else if (resource == "adc:ADC1/6") {
-    read_buffer(battery_adc.samples(), values);
-  } else if (resource == "ipc:app") {
-    balbot::firmware::receive_from_linux(values);
-  } else {
-    unknown_resource(resource);
-  }
+template <>
+void pwm_write<pwm("TIM1", 3)>(float percent) {
+  (void)pwm_timer.set_duty(right_pwm_channel, percent);
 }
-
+template <>
+void pwm_write<pwm("TIM1", 4)>(float percent) {
+  (void)pwm_timer.set_duty(left_pwm_channel, percent);
+}
+template <>
+CaptureReading capture_read<capture("TIM2", 1)>() {
+  return read_capture(left_hall);
+}
+template <>
+CaptureReading capture_read<capture("TIM4", 4)>() {
+  return read_capture(right_hall);
+}
+template <>
+CaptureReading capture_read<capture("TIM5", 2)>() {
+  return read_capture(echo);
+}
+template <>
+void spi_transfer<spi("SPI5")>(std::span<const std::uint8_t> bytes) {
+  start_imu_transfer(bytes);
+}
+template <>
+void spi_received<spi("SPI5")>(std::span<std::uint8_t> bytes) {
+  read_buffer(imu_bus.received(), bytes);
+}
+template <>
+void adc_start<adc("ADC1", 6)>(std::uint16_t count) {
+  start_battery_samples(count);
+}
+template <>
+void adc_samples<adc("ADC1", 6)>(std::span<std::uint16_t> samples) {
+  read_buffer(battery_adc.samples(), samples);
+}
 }  // namespace duet::hardware

@@ -86,9 +86,9 @@ app_channel::Endpoint endpoint{application, application_queue, interrupt_lock, a
                                application_packet_buffer};
 
 template <typename T>
-void bytes_to(std::span<const double> bytes, T& value) {
+void bytes_to(std::span<const std::uint8_t> bytes, T& value) {
   std::array<std::uint8_t, sizeof(T)> raw{};
-  for (std::size_t k = 0; k < raw.size() && k < bytes.size(); ++k) raw[k] = static_cast<std::uint8_t>(bytes[k]);
+  std::memcpy(raw.data(), bytes.data(), bytes.size() < raw.size() ? bytes.size() : raw.size());
   std::memcpy(&value, raw.data(), raw.size());
 }
 
@@ -140,20 +140,20 @@ void publish_executive(const app_channel::ExecutiveReport& report) {
   kick_application();
 }
 
-void send_to_linux(std::span<const double> message_bytes) {
+void send_to_linux(std::span<const std::uint8_t> message_bytes) {
   bytes_to(message_bytes, telemetry);
   show_the_settings_in_use();
   endpoint.publish(telemetry_sample++);
   kick_application();
 }
 
-void receive_from_linux(std::span<double> message_bytes) {
+void receive_from_linux(std::span<std::uint8_t> message_bytes) {
   std::array<std::uint8_t, settings_bytes> raw{};
   {
     const cortex_m::InterruptMask masked;
     std::memcpy(raw.data(), &settings_sent, raw.size());
   }
-  for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0.0;
+  for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0;
 }
 
 ChannelLosses channel_losses() {

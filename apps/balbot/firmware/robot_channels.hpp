@@ -32,10 +32,10 @@ void tell_the_model_of_new_gains();
 void on_task_finished(std::size_t task);
 // The model's message to Linux (IpcSend: theta, battery voltage, distance, P, I, D in use as little-endian floats;
 // the controller, whose settings, the robot's state as bytes), published on the application channel.
-void send_to_linux(std::span<const double> message_bytes);
+void send_to_linux(std::span<const std::uint8_t> message_bytes);
 // The message Linux sent last (IpcReceive: P, I, D as little-endian floats, a byte 1 for the LQR), as the model reads
 // it.
-void receive_from_linux(std::span<double> message_bytes);
+void receive_from_linux(std::span<std::uint8_t> message_bytes);
 // The executive's account for the dashboard's Status page, on the application channel (from the background loop).
 void publish_executive(const duet::app_channel::ExecutiveReport& report);
 

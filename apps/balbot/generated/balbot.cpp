@@ -130,25 +130,47 @@ Memory memory{};
 namespace {
 
 constexpr std::uint8_t device_reset_bytes_value[] = {std::uint8_t{107}, std::uint8_t{128}};
+constexpr auto device_reset_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t path_reset_bytes_value[] = {std::uint8_t{104}, std::uint8_t{7}};
+constexpr auto path_reset_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t wake_bytes_value[] = {std::uint8_t{107}, std::uint8_t{1}};
+constexpr auto wake_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t spi_only_bytes_value[] = {std::uint8_t{106}, std::uint8_t{16}};
+constexpr auto spi_only_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t sample_rate_bytes_value[] = {std::uint8_t{25}, std::uint8_t{0}};
+constexpr auto sample_rate_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t gyro_filter_bytes_value[] = {std::uint8_t{26}, std::uint8_t{1}};
+constexpr auto gyro_filter_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t gyro_range_bytes_value[] = {std::uint8_t{27}, std::uint8_t{24}};
+constexpr auto gyro_range_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t accel_range_bytes_value[] = {std::uint8_t{28}, std::uint8_t{8}};
+constexpr auto accel_range_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t accel_filter_bytes_value[] = {std::uint8_t{29}, std::uint8_t{1}};
+constexpr auto accel_filter_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t interrupt_pin_bytes_value[] = {std::uint8_t{55}, std::uint8_t{0}};
+constexpr auto interrupt_pin_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t interrupt_enable_bytes_value[] = {std::uint8_t{56}, std::uint8_t{1}};
+constexpr auto interrupt_enable_write_resource = duet::hardware::spi("SPI5");
 constexpr std::uint8_t data_ready_request_value[] = {std::uint8_t{187}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}, std::uint8_t{0}};
+constexpr auto data_ready_send_resource = duet::hardware::spi("SPI5");
+constexpr auto receive_complete_receive_resource = duet::hardware::spi("SPI5");
 constexpr duet::hardware::Pin stby_pin_pin = duet::hardware::pin("PA12");
 constexpr duet::hardware::Pin bin1_pin_pin = duet::hardware::pin("PE9");
 constexpr duet::hardware::Pin bin2_pin_pin = duet::hardware::pin("PD1");
 constexpr duet::hardware::Pin ain1_pin_pin = duet::hardware::pin("PE10");
 constexpr duet::hardware::Pin ain2_pin_pin = duet::hardware::pin("PD14");
+constexpr auto set_duty_pwm_a_resource = duet::hardware::pwm("TIM1", 3);
+constexpr auto set_duty_pwm_b_resource = duet::hardware::pwm("TIM1", 4);
+constexpr auto hall_left_capture_resource = duet::hardware::capture("TIM2", 1);
 constexpr duet::hardware::Pin hall_left_signal_b_pin = duet::hardware::pin("PH6");
+constexpr auto hall_right_capture_resource = duet::hardware::capture("TIM4", 4);
 constexpr duet::hardware::Pin hall_right_signal_b_pin = duet::hardware::pin("PG3");
 constexpr duet::hardware::Pin trig_pin_pin = duet::hardware::pin("PE11");
+constexpr auto echo_capture_resource = duet::hardware::capture("TIM5", 2);
+constexpr auto adc_request_start_resource = duet::hardware::adc("ADC1", 6);
+constexpr auto adc_complete_samples_resource = duet::hardware::adc("ADC1", 6);
+constexpr auto send_resource = duet::hardware::ipc("app");
+constexpr auto receive_message_resource = duet::hardware::ipc("app");
 
 // The page the steps read (it points at one of the two Parameters objects).
 [[maybe_unused]] const Parameters& parameters_in_use() {
@@ -417,10 +439,7 @@ void step_rate_1() {
   adc_request_triggered = state.adc_request_trigger_edge.detect(duet::blocks::Edge::rising, adc_clock);
   // adc_request/start (AdcStart)
   if (duet::blocks::convert<bool>(adc_request_triggered)) {
-    {
-      const double count[] = {100.0};
-      duet::hardware::write("adc:ADC1/6", count);
-    }
+    duet::hardware::adc_start<adc_request_start_resource>(std::uint16_t{100});
   }
   // gains_to_step (RateTransition)
   {
@@ -532,8 +551,8 @@ void step_rate_10() {
   // device_reset/write (SpiDma)
   if (duet::blocks::convert<bool>(device_reset_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.device_reset_bytes[0]), duet::blocks::convert<double>(signals.device_reset_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.device_reset_bytes[0], signals.device_reset_bytes[1]};
+      duet::hardware::spi_transfer<device_reset_write_resource>(written);
     }
   }
   // at_path_reset (Compare)
@@ -545,8 +564,8 @@ void step_rate_10() {
   // path_reset/write (SpiDma)
   if (duet::blocks::convert<bool>(path_reset_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.path_reset_bytes[0]), duet::blocks::convert<double>(signals.path_reset_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.path_reset_bytes[0], signals.path_reset_bytes[1]};
+      duet::hardware::spi_transfer<path_reset_write_resource>(written);
     }
   }
   // at_wake (Compare)
@@ -558,8 +577,8 @@ void step_rate_10() {
   // wake/write (SpiDma)
   if (duet::blocks::convert<bool>(wake_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.wake_bytes[0]), duet::blocks::convert<double>(signals.wake_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.wake_bytes[0], signals.wake_bytes[1]};
+      duet::hardware::spi_transfer<wake_write_resource>(written);
     }
   }
   // at_spi_only (Compare)
@@ -571,8 +590,8 @@ void step_rate_10() {
   // spi_only/write (SpiDma)
   if (duet::blocks::convert<bool>(spi_only_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.spi_only_bytes[0]), duet::blocks::convert<double>(signals.spi_only_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.spi_only_bytes[0], signals.spi_only_bytes[1]};
+      duet::hardware::spi_transfer<spi_only_write_resource>(written);
     }
   }
   // at_sample_rate (Compare)
@@ -584,8 +603,8 @@ void step_rate_10() {
   // sample_rate/write (SpiDma)
   if (duet::blocks::convert<bool>(sample_rate_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.sample_rate_bytes[0]), duet::blocks::convert<double>(signals.sample_rate_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.sample_rate_bytes[0], signals.sample_rate_bytes[1]};
+      duet::hardware::spi_transfer<sample_rate_write_resource>(written);
     }
   }
   // at_gyro_filter (Compare)
@@ -597,8 +616,8 @@ void step_rate_10() {
   // gyro_filter/write (SpiDma)
   if (duet::blocks::convert<bool>(gyro_filter_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.gyro_filter_bytes[0]), duet::blocks::convert<double>(signals.gyro_filter_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.gyro_filter_bytes[0], signals.gyro_filter_bytes[1]};
+      duet::hardware::spi_transfer<gyro_filter_write_resource>(written);
     }
   }
   // at_gyro_range (Compare)
@@ -610,8 +629,8 @@ void step_rate_10() {
   // gyro_range/write (SpiDma)
   if (duet::blocks::convert<bool>(gyro_range_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.gyro_range_bytes[0]), duet::blocks::convert<double>(signals.gyro_range_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.gyro_range_bytes[0], signals.gyro_range_bytes[1]};
+      duet::hardware::spi_transfer<gyro_range_write_resource>(written);
     }
   }
   // at_accel_range (Compare)
@@ -623,8 +642,8 @@ void step_rate_10() {
   // accel_range/write (SpiDma)
   if (duet::blocks::convert<bool>(accel_range_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.accel_range_bytes[0]), duet::blocks::convert<double>(signals.accel_range_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.accel_range_bytes[0], signals.accel_range_bytes[1]};
+      duet::hardware::spi_transfer<accel_range_write_resource>(written);
     }
   }
   // at_accel_filter (Compare)
@@ -636,8 +655,8 @@ void step_rate_10() {
   // accel_filter/write (SpiDma)
   if (duet::blocks::convert<bool>(accel_filter_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.accel_filter_bytes[0]), duet::blocks::convert<double>(signals.accel_filter_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.accel_filter_bytes[0], signals.accel_filter_bytes[1]};
+      duet::hardware::spi_transfer<accel_filter_write_resource>(written);
     }
   }
   // at_interrupt_pin (Compare)
@@ -649,8 +668,8 @@ void step_rate_10() {
   // interrupt_pin/write (SpiDma)
   if (duet::blocks::convert<bool>(interrupt_pin_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.interrupt_pin_bytes[0]), duet::blocks::convert<double>(signals.interrupt_pin_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.interrupt_pin_bytes[0], signals.interrupt_pin_bytes[1]};
+      duet::hardware::spi_transfer<interrupt_pin_write_resource>(written);
     }
   }
   // at_interrupt_enable (Compare)
@@ -662,8 +681,8 @@ void step_rate_10() {
   // interrupt_enable/write (SpiDma)
   if (duet::blocks::convert<bool>(interrupt_enable_triggered)) {
     {
-      const double written[] = {duet::blocks::convert<double>(signals.interrupt_enable_bytes[0]), duet::blocks::convert<double>(signals.interrupt_enable_bytes[1])};
-      duet::hardware::write("spi:SPI5", written);
+      const std::uint8_t written[] = {signals.interrupt_enable_bytes[0], signals.interrupt_enable_bytes[1]};
+      duet::hardware::spi_transfer<interrupt_enable_write_resource>(written);
     }
   }
   // samples_to_step (RateTransition)
@@ -711,8 +730,8 @@ void step_rate_10() {
   duet::blocks::pack(in_effect_slow[2], duet::blocks::Endian::little, &message[26]);
   // send (IpcSend)
   {
-    const double written[] = {duet::blocks::convert<double>(message[0]), duet::blocks::convert<double>(message[1]), duet::blocks::convert<double>(message[2]), duet::blocks::convert<double>(message[3]), duet::blocks::convert<double>(message[4]), duet::blocks::convert<double>(message[5]), duet::blocks::convert<double>(message[6]), duet::blocks::convert<double>(message[7]), duet::blocks::convert<double>(message[8]), duet::blocks::convert<double>(message[9]), duet::blocks::convert<double>(message[10]), duet::blocks::convert<double>(message[11]), duet::blocks::convert<double>(message[12]), duet::blocks::convert<double>(message[13]), duet::blocks::convert<double>(message[14]), duet::blocks::convert<double>(message[15]), duet::blocks::convert<double>(message[16]), duet::blocks::convert<double>(message[17]), duet::blocks::convert<double>(message[18]), duet::blocks::convert<double>(message[19]), duet::blocks::convert<double>(message[20]), duet::blocks::convert<double>(message[21]), duet::blocks::convert<double>(message[22]), duet::blocks::convert<double>(message[23]), duet::blocks::convert<double>(message[24]), duet::blocks::convert<double>(message[25]), duet::blocks::convert<double>(message[26])};
-    duet::hardware::write("ipc:app", written);
+    const std::uint8_t written[] = {message[0], message[1], message[2], message[3], message[4], message[5], message[6], message[7], message[8], message[9], message[10], message[11], message[12], message[13], message[14], message[15], message[16], message[17], message[18], message[19], message[20], message[21], message[22], message[23], message[24], message[25], message[26]};
+    duet::hardware::ipc_send<send_resource>(written);
   }
   state.init_clock.update(std::uint32_t{4294967295});
 }
@@ -723,8 +742,8 @@ void task_EXTI8() {
   for (std::size_t i = 0; i < 15; ++i) data_ready_request[i] = data_ready_request_value[i];
   // data_ready/send (SpiDma)
   {
-    const double written[] = {duet::blocks::convert<double>(data_ready_request[0]), duet::blocks::convert<double>(data_ready_request[1]), duet::blocks::convert<double>(data_ready_request[2]), duet::blocks::convert<double>(data_ready_request[3]), duet::blocks::convert<double>(data_ready_request[4]), duet::blocks::convert<double>(data_ready_request[5]), duet::blocks::convert<double>(data_ready_request[6]), duet::blocks::convert<double>(data_ready_request[7]), duet::blocks::convert<double>(data_ready_request[8]), duet::blocks::convert<double>(data_ready_request[9]), duet::blocks::convert<double>(data_ready_request[10]), duet::blocks::convert<double>(data_ready_request[11]), duet::blocks::convert<double>(data_ready_request[12]), duet::blocks::convert<double>(data_ready_request[13]), duet::blocks::convert<double>(data_ready_request[14])};
-    duet::hardware::write("spi:SPI5", written);
+    const std::uint8_t written[] = {data_ready_request[0], data_ready_request[1], data_ready_request[2], data_ready_request[3], data_ready_request[4], data_ready_request[5], data_ready_request[6], data_ready_request[7], data_ready_request[8], data_ready_request[9], data_ready_request[10], data_ready_request[11], data_ready_request[12], data_ready_request[13], data_ready_request[14]};
+    duet::hardware::spi_transfer<data_ready_send_resource>(written);
   }
 }
 
@@ -737,23 +756,7 @@ void task_DMA2_Stream3() {
 void task_DMA2_Stream2() {
   // receive_complete/receive (SpiReceive)
   {
-    double values[15]{};
-    duet::hardware::read("spi:SPI5", values);
-    signals.mpu_bytes_received[0] = duet::blocks::convert<std::uint8_t>(values[0]);
-    signals.mpu_bytes_received[1] = duet::blocks::convert<std::uint8_t>(values[1]);
-    signals.mpu_bytes_received[2] = duet::blocks::convert<std::uint8_t>(values[2]);
-    signals.mpu_bytes_received[3] = duet::blocks::convert<std::uint8_t>(values[3]);
-    signals.mpu_bytes_received[4] = duet::blocks::convert<std::uint8_t>(values[4]);
-    signals.mpu_bytes_received[5] = duet::blocks::convert<std::uint8_t>(values[5]);
-    signals.mpu_bytes_received[6] = duet::blocks::convert<std::uint8_t>(values[6]);
-    signals.mpu_bytes_received[7] = duet::blocks::convert<std::uint8_t>(values[7]);
-    signals.mpu_bytes_received[8] = duet::blocks::convert<std::uint8_t>(values[8]);
-    signals.mpu_bytes_received[9] = duet::blocks::convert<std::uint8_t>(values[9]);
-    signals.mpu_bytes_received[10] = duet::blocks::convert<std::uint8_t>(values[10]);
-    signals.mpu_bytes_received[11] = duet::blocks::convert<std::uint8_t>(values[11]);
-    signals.mpu_bytes_received[12] = duet::blocks::convert<std::uint8_t>(values[12]);
-    signals.mpu_bytes_received[13] = duet::blocks::convert<std::uint8_t>(values[13]);
-    signals.mpu_bytes_received[14] = duet::blocks::convert<std::uint8_t>(values[14]);
+    duet::hardware::spi_received<receive_complete_receive_resource>({signals.mpu_bytes_received, 15});
   }
   state.mpu_bytes_to_step.write(std::array<std::uint8_t, 15>{signals.mpu_bytes_received[0], signals.mpu_bytes_received[1], signals.mpu_bytes_received[2], signals.mpu_bytes_received[3], signals.mpu_bytes_received[4], signals.mpu_bytes_received[5], signals.mpu_bytes_received[6], signals.mpu_bytes_received[7], signals.mpu_bytes_received[8], signals.mpu_bytes_received[9], signals.mpu_bytes_received[10], signals.mpu_bytes_received[11], signals.mpu_bytes_received[12], signals.mpu_bytes_received[13], signals.mpu_bytes_received[14]});
 }
@@ -763,24 +766,17 @@ void task_TIM1() {
   float set_duty_percent_now{};
   set_duty_percent_now = state.set_duty_latest.read();
   // set_duty/pwm_a (PwmOut)
-  {
-    const double written[] = {duet::blocks::convert<double>(set_duty_percent_now)};
-    duet::hardware::write("pwm:TIM1/3", written);
-  }
+  duet::hardware::pwm_write<set_duty_pwm_a_resource>(set_duty_percent_now);
   // set_duty/pwm_b (PwmOut)
-  {
-    const double written[] = {duet::blocks::convert<double>(set_duty_percent_now)};
-    duet::hardware::write("pwm:TIM1/4", written);
-  }
+  duet::hardware::pwm_write<set_duty_pwm_b_resource>(set_duty_percent_now);
 }
 
 void task_TIM2() {
   // hall_left/capture (InputCapture)
   std::uint32_t hall_left_count{};
   {
-    double values[1]{};
-    duet::hardware::read("capture:TIM2/1", values);
-    hall_left_count = duet::blocks::convert<std::uint32_t>(values[0]);
+    const duet::hardware::CaptureReading reading = duet::hardware::capture_read<hall_left_capture_resource>();
+    hall_left_count = reading.count;
   }
   // hall_left/signal_b (GpioIn)
   bool hall_left_b_high{};
@@ -816,9 +812,8 @@ void task_TIM4() {
   // hall_right/capture (InputCapture)
   std::uint32_t hall_right_count{};
   {
-    double values[1]{};
-    duet::hardware::read("capture:TIM4/4", values);
-    hall_right_count = duet::blocks::convert<std::uint32_t>(values[0]);
+    const duet::hardware::CaptureReading reading = duet::hardware::capture_read<hall_right_capture_resource>();
+    hall_right_count = reading.count;
   }
   // hall_right/signal_b (GpioIn)
   bool hall_right_b_high{};
@@ -854,9 +849,8 @@ void task_TIM5() {
   // echo/capture (InputCapture)
   std::uint32_t echo_count{};
   {
-    double values[1]{};
-    duet::hardware::read("capture:TIM5/2", values);
-    echo_count = duet::blocks::convert<std::uint32_t>(values[0]);
+    const duet::hardware::CaptureReading reading = duet::hardware::capture_read<echo_capture_resource>();
+    echo_count = reading.count;
   }
   // echo/every_second (Code)
   {
@@ -873,108 +867,7 @@ void task_TIM5() {
 void task_DMA2_Stream4() {
   // adc_complete/samples (AdcDma)
   {
-    double values[100]{};
-    duet::hardware::read("adc:ADC1/6", values);
-    signals.adc_samples_received[0] = duet::blocks::convert<std::uint16_t>(values[0]);
-    signals.adc_samples_received[1] = duet::blocks::convert<std::uint16_t>(values[1]);
-    signals.adc_samples_received[2] = duet::blocks::convert<std::uint16_t>(values[2]);
-    signals.adc_samples_received[3] = duet::blocks::convert<std::uint16_t>(values[3]);
-    signals.adc_samples_received[4] = duet::blocks::convert<std::uint16_t>(values[4]);
-    signals.adc_samples_received[5] = duet::blocks::convert<std::uint16_t>(values[5]);
-    signals.adc_samples_received[6] = duet::blocks::convert<std::uint16_t>(values[6]);
-    signals.adc_samples_received[7] = duet::blocks::convert<std::uint16_t>(values[7]);
-    signals.adc_samples_received[8] = duet::blocks::convert<std::uint16_t>(values[8]);
-    signals.adc_samples_received[9] = duet::blocks::convert<std::uint16_t>(values[9]);
-    signals.adc_samples_received[10] = duet::blocks::convert<std::uint16_t>(values[10]);
-    signals.adc_samples_received[11] = duet::blocks::convert<std::uint16_t>(values[11]);
-    signals.adc_samples_received[12] = duet::blocks::convert<std::uint16_t>(values[12]);
-    signals.adc_samples_received[13] = duet::blocks::convert<std::uint16_t>(values[13]);
-    signals.adc_samples_received[14] = duet::blocks::convert<std::uint16_t>(values[14]);
-    signals.adc_samples_received[15] = duet::blocks::convert<std::uint16_t>(values[15]);
-    signals.adc_samples_received[16] = duet::blocks::convert<std::uint16_t>(values[16]);
-    signals.adc_samples_received[17] = duet::blocks::convert<std::uint16_t>(values[17]);
-    signals.adc_samples_received[18] = duet::blocks::convert<std::uint16_t>(values[18]);
-    signals.adc_samples_received[19] = duet::blocks::convert<std::uint16_t>(values[19]);
-    signals.adc_samples_received[20] = duet::blocks::convert<std::uint16_t>(values[20]);
-    signals.adc_samples_received[21] = duet::blocks::convert<std::uint16_t>(values[21]);
-    signals.adc_samples_received[22] = duet::blocks::convert<std::uint16_t>(values[22]);
-    signals.adc_samples_received[23] = duet::blocks::convert<std::uint16_t>(values[23]);
-    signals.adc_samples_received[24] = duet::blocks::convert<std::uint16_t>(values[24]);
-    signals.adc_samples_received[25] = duet::blocks::convert<std::uint16_t>(values[25]);
-    signals.adc_samples_received[26] = duet::blocks::convert<std::uint16_t>(values[26]);
-    signals.adc_samples_received[27] = duet::blocks::convert<std::uint16_t>(values[27]);
-    signals.adc_samples_received[28] = duet::blocks::convert<std::uint16_t>(values[28]);
-    signals.adc_samples_received[29] = duet::blocks::convert<std::uint16_t>(values[29]);
-    signals.adc_samples_received[30] = duet::blocks::convert<std::uint16_t>(values[30]);
-    signals.adc_samples_received[31] = duet::blocks::convert<std::uint16_t>(values[31]);
-    signals.adc_samples_received[32] = duet::blocks::convert<std::uint16_t>(values[32]);
-    signals.adc_samples_received[33] = duet::blocks::convert<std::uint16_t>(values[33]);
-    signals.adc_samples_received[34] = duet::blocks::convert<std::uint16_t>(values[34]);
-    signals.adc_samples_received[35] = duet::blocks::convert<std::uint16_t>(values[35]);
-    signals.adc_samples_received[36] = duet::blocks::convert<std::uint16_t>(values[36]);
-    signals.adc_samples_received[37] = duet::blocks::convert<std::uint16_t>(values[37]);
-    signals.adc_samples_received[38] = duet::blocks::convert<std::uint16_t>(values[38]);
-    signals.adc_samples_received[39] = duet::blocks::convert<std::uint16_t>(values[39]);
-    signals.adc_samples_received[40] = duet::blocks::convert<std::uint16_t>(values[40]);
-    signals.adc_samples_received[41] = duet::blocks::convert<std::uint16_t>(values[41]);
-    signals.adc_samples_received[42] = duet::blocks::convert<std::uint16_t>(values[42]);
-    signals.adc_samples_received[43] = duet::blocks::convert<std::uint16_t>(values[43]);
-    signals.adc_samples_received[44] = duet::blocks::convert<std::uint16_t>(values[44]);
-    signals.adc_samples_received[45] = duet::blocks::convert<std::uint16_t>(values[45]);
-    signals.adc_samples_received[46] = duet::blocks::convert<std::uint16_t>(values[46]);
-    signals.adc_samples_received[47] = duet::blocks::convert<std::uint16_t>(values[47]);
-    signals.adc_samples_received[48] = duet::blocks::convert<std::uint16_t>(values[48]);
-    signals.adc_samples_received[49] = duet::blocks::convert<std::uint16_t>(values[49]);
-    signals.adc_samples_received[50] = duet::blocks::convert<std::uint16_t>(values[50]);
-    signals.adc_samples_received[51] = duet::blocks::convert<std::uint16_t>(values[51]);
-    signals.adc_samples_received[52] = duet::blocks::convert<std::uint16_t>(values[52]);
-    signals.adc_samples_received[53] = duet::blocks::convert<std::uint16_t>(values[53]);
-    signals.adc_samples_received[54] = duet::blocks::convert<std::uint16_t>(values[54]);
-    signals.adc_samples_received[55] = duet::blocks::convert<std::uint16_t>(values[55]);
-    signals.adc_samples_received[56] = duet::blocks::convert<std::uint16_t>(values[56]);
-    signals.adc_samples_received[57] = duet::blocks::convert<std::uint16_t>(values[57]);
-    signals.adc_samples_received[58] = duet::blocks::convert<std::uint16_t>(values[58]);
-    signals.adc_samples_received[59] = duet::blocks::convert<std::uint16_t>(values[59]);
-    signals.adc_samples_received[60] = duet::blocks::convert<std::uint16_t>(values[60]);
-    signals.adc_samples_received[61] = duet::blocks::convert<std::uint16_t>(values[61]);
-    signals.adc_samples_received[62] = duet::blocks::convert<std::uint16_t>(values[62]);
-    signals.adc_samples_received[63] = duet::blocks::convert<std::uint16_t>(values[63]);
-    signals.adc_samples_received[64] = duet::blocks::convert<std::uint16_t>(values[64]);
-    signals.adc_samples_received[65] = duet::blocks::convert<std::uint16_t>(values[65]);
-    signals.adc_samples_received[66] = duet::blocks::convert<std::uint16_t>(values[66]);
-    signals.adc_samples_received[67] = duet::blocks::convert<std::uint16_t>(values[67]);
-    signals.adc_samples_received[68] = duet::blocks::convert<std::uint16_t>(values[68]);
-    signals.adc_samples_received[69] = duet::blocks::convert<std::uint16_t>(values[69]);
-    signals.adc_samples_received[70] = duet::blocks::convert<std::uint16_t>(values[70]);
-    signals.adc_samples_received[71] = duet::blocks::convert<std::uint16_t>(values[71]);
-    signals.adc_samples_received[72] = duet::blocks::convert<std::uint16_t>(values[72]);
-    signals.adc_samples_received[73] = duet::blocks::convert<std::uint16_t>(values[73]);
-    signals.adc_samples_received[74] = duet::blocks::convert<std::uint16_t>(values[74]);
-    signals.adc_samples_received[75] = duet::blocks::convert<std::uint16_t>(values[75]);
-    signals.adc_samples_received[76] = duet::blocks::convert<std::uint16_t>(values[76]);
-    signals.adc_samples_received[77] = duet::blocks::convert<std::uint16_t>(values[77]);
-    signals.adc_samples_received[78] = duet::blocks::convert<std::uint16_t>(values[78]);
-    signals.adc_samples_received[79] = duet::blocks::convert<std::uint16_t>(values[79]);
-    signals.adc_samples_received[80] = duet::blocks::convert<std::uint16_t>(values[80]);
-    signals.adc_samples_received[81] = duet::blocks::convert<std::uint16_t>(values[81]);
-    signals.adc_samples_received[82] = duet::blocks::convert<std::uint16_t>(values[82]);
-    signals.adc_samples_received[83] = duet::blocks::convert<std::uint16_t>(values[83]);
-    signals.adc_samples_received[84] = duet::blocks::convert<std::uint16_t>(values[84]);
-    signals.adc_samples_received[85] = duet::blocks::convert<std::uint16_t>(values[85]);
-    signals.adc_samples_received[86] = duet::blocks::convert<std::uint16_t>(values[86]);
-    signals.adc_samples_received[87] = duet::blocks::convert<std::uint16_t>(values[87]);
-    signals.adc_samples_received[88] = duet::blocks::convert<std::uint16_t>(values[88]);
-    signals.adc_samples_received[89] = duet::blocks::convert<std::uint16_t>(values[89]);
-    signals.adc_samples_received[90] = duet::blocks::convert<std::uint16_t>(values[90]);
-    signals.adc_samples_received[91] = duet::blocks::convert<std::uint16_t>(values[91]);
-    signals.adc_samples_received[92] = duet::blocks::convert<std::uint16_t>(values[92]);
-    signals.adc_samples_received[93] = duet::blocks::convert<std::uint16_t>(values[93]);
-    signals.adc_samples_received[94] = duet::blocks::convert<std::uint16_t>(values[94]);
-    signals.adc_samples_received[95] = duet::blocks::convert<std::uint16_t>(values[95]);
-    signals.adc_samples_received[96] = duet::blocks::convert<std::uint16_t>(values[96]);
-    signals.adc_samples_received[97] = duet::blocks::convert<std::uint16_t>(values[97]);
-    signals.adc_samples_received[98] = duet::blocks::convert<std::uint16_t>(values[98]);
-    signals.adc_samples_received[99] = duet::blocks::convert<std::uint16_t>(values[99]);
+    duet::hardware::adc_samples<adc_complete_samples_resource>({signals.adc_samples_received, 100});
   }
   state.samples_to_step.write(std::array<std::uint16_t, 100>{signals.adc_samples_received[0], signals.adc_samples_received[1], signals.adc_samples_received[2], signals.adc_samples_received[3], signals.adc_samples_received[4], signals.adc_samples_received[5], signals.adc_samples_received[6], signals.adc_samples_received[7], signals.adc_samples_received[8], signals.adc_samples_received[9], signals.adc_samples_received[10], signals.adc_samples_received[11], signals.adc_samples_received[12], signals.adc_samples_received[13], signals.adc_samples_received[14], signals.adc_samples_received[15], signals.adc_samples_received[16], signals.adc_samples_received[17], signals.adc_samples_received[18], signals.adc_samples_received[19], signals.adc_samples_received[20], signals.adc_samples_received[21], signals.adc_samples_received[22], signals.adc_samples_received[23], signals.adc_samples_received[24], signals.adc_samples_received[25], signals.adc_samples_received[26], signals.adc_samples_received[27], signals.adc_samples_received[28], signals.adc_samples_received[29], signals.adc_samples_received[30], signals.adc_samples_received[31], signals.adc_samples_received[32], signals.adc_samples_received[33], signals.adc_samples_received[34], signals.adc_samples_received[35], signals.adc_samples_received[36], signals.adc_samples_received[37], signals.adc_samples_received[38], signals.adc_samples_received[39], signals.adc_samples_received[40], signals.adc_samples_received[41], signals.adc_samples_received[42], signals.adc_samples_received[43], signals.adc_samples_received[44], signals.adc_samples_received[45], signals.adc_samples_received[46], signals.adc_samples_received[47], signals.adc_samples_received[48], signals.adc_samples_received[49], signals.adc_samples_received[50], signals.adc_samples_received[51], signals.adc_samples_received[52], signals.adc_samples_received[53], signals.adc_samples_received[54], signals.adc_samples_received[55], signals.adc_samples_received[56], signals.adc_samples_received[57], signals.adc_samples_received[58], signals.adc_samples_received[59], signals.adc_samples_received[60], signals.adc_samples_received[61], signals.adc_samples_received[62], signals.adc_samples_received[63], signals.adc_samples_received[64], signals.adc_samples_received[65], signals.adc_samples_received[66], signals.adc_samples_received[67], signals.adc_samples_received[68], signals.adc_samples_received[69], signals.adc_samples_received[70], signals.adc_samples_received[71], signals.adc_samples_received[72], signals.adc_samples_received[73], signals.adc_samples_received[74], signals.adc_samples_received[75], signals.adc_samples_received[76], signals.adc_samples_received[77], signals.adc_samples_received[78], signals.adc_samples_received[79], signals.adc_samples_received[80], signals.adc_samples_received[81], signals.adc_samples_received[82], signals.adc_samples_received[83], signals.adc_samples_received[84], signals.adc_samples_received[85], signals.adc_samples_received[86], signals.adc_samples_received[87], signals.adc_samples_received[88], signals.adc_samples_received[89], signals.adc_samples_received[90], signals.adc_samples_received[91], signals.adc_samples_received[92], signals.adc_samples_received[93], signals.adc_samples_received[94], signals.adc_samples_received[95], signals.adc_samples_received[96], signals.adc_samples_received[97], signals.adc_samples_received[98], signals.adc_samples_received[99]});
 }
@@ -983,21 +876,7 @@ void task_IPCC_RX1() {
   // receive/message (IpcReceive)
   std::uint8_t receive_message[13]{};
   {
-    double values[13]{};
-    duet::hardware::read("ipc:app", values);
-    receive_message[0] = duet::blocks::convert<std::uint8_t>(values[0]);
-    receive_message[1] = duet::blocks::convert<std::uint8_t>(values[1]);
-    receive_message[2] = duet::blocks::convert<std::uint8_t>(values[2]);
-    receive_message[3] = duet::blocks::convert<std::uint8_t>(values[3]);
-    receive_message[4] = duet::blocks::convert<std::uint8_t>(values[4]);
-    receive_message[5] = duet::blocks::convert<std::uint8_t>(values[5]);
-    receive_message[6] = duet::blocks::convert<std::uint8_t>(values[6]);
-    receive_message[7] = duet::blocks::convert<std::uint8_t>(values[7]);
-    receive_message[8] = duet::blocks::convert<std::uint8_t>(values[8]);
-    receive_message[9] = duet::blocks::convert<std::uint8_t>(values[9]);
-    receive_message[10] = duet::blocks::convert<std::uint8_t>(values[10]);
-    receive_message[11] = duet::blocks::convert<std::uint8_t>(values[11]);
-    receive_message[12] = duet::blocks::convert<std::uint8_t>(values[12]);
+    duet::hardware::ipc_receive<receive_message_resource>({receive_message, 13});
   }
   // receive/count (Counter)
   signals.messages_received = state.receive_count.output();

@@ -32,6 +32,7 @@ Memory memory{};
 
 namespace {
 
+constexpr auto adc_resource = duet::hardware::adc("ADC1", 6);
 constexpr duet::hardware::Pin heater_pin = duet::hardware::pin("LED0");
 
 // The page the steps read (it points at one of the two Parameters objects).
@@ -51,9 +52,7 @@ void step_rate_1() {
   const Parameters& p = parameters_in_use();
   // adc (AdcDma)
   {
-    double values[1]{};
-    duet::hardware::read("adc:ADC1/6", values);
-    signals.sample = duet::blocks::convert<std::uint16_t>(values[0]);
+    duet::hardware::adc_samples<adc_resource>({&signals.sample, 1});
   }
   // cold (Compare)
   signals.heating = duet::blocks::compare(duet::blocks::CompareOperator::less, signals.sample, p.setpoint);

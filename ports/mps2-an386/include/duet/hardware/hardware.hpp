@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "duet/cortex_m/registers.hpp"
+#include "duet/hardware/resources.hpp"
 #include "duet/mps2_an386/board.hpp"
 
 namespace duet::hardware {
@@ -64,10 +65,28 @@ consteval std::uint16_t interrupt_number(std::string_view name) {
   return static_cast<std::uint16_t>(detail::no_such_pin_on_mps2_an386().mask);
 }
 
-// The plant's resources: what an image with a plant link defines (apps/balbot/pil). An image without one that
-// reaches them halts with a message saying so.
+// The plant's resources by the plant's names, as doubles: what an image with a plant link defines (apps/balbot/pil).
+// An image without one that reaches them halts with a message saying so. The typed calls for PWM, capture, SPI, ADC
+// and EXTI come to these (duet/hardware/by_plant_name.hpp).
 void write(std::string_view resource, std::span<const double> values);
 void read(std::string_view resource, std::span<double> values);
+
+namespace detail {
+template <auto resource>
+inline constexpr bool routed_by_the_board = false;  // a specialization in board_routes.hpp is the routing
+}  // namespace detail
+
+// A message channel to the application core is the image's own (the robot's goes over a UART that stands in for
+// RPMsg): it routes each in its duet/hardware/board_routes.hpp, as the STM32MP15's board configuration does. One it
+// does not route does not compile.
+template <IpcChannel channel>
+void ipc_send(std::span<const std::uint8_t>) {
+  static_assert(detail::routed_by_the_board<channel>, "the image routes no such IPC channel: see board_routes.hpp");
+}
+template <IpcChannel channel>
+void ipc_receive(std::span<std::uint8_t>) {
+  static_assert(detail::routed_by_the_board<channel>, "the image routes no such IPC channel: see board_routes.hpp");
+}
 
 inline void gpio_write(const Pin& pin, bool level) {
   if (pin.mask != 0) {
@@ -87,3 +106,10 @@ inline bool gpio_read(const Pin& pin) {
 }
 
 }  // namespace duet::hardware
+
+#include "duet/hardware/by_plant_name.hpp"
+
+// The image's routes, if it has any.
+#if __has_include("duet/hardware/board_routes.hpp")
+#include "duet/hardware/board_routes.hpp"
+#endif

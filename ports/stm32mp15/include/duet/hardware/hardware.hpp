@@ -4,15 +4,21 @@
 // Interrupts by the vector table's names (RM0436's: "EXTI8", "DMA2_Stream2", ...), and two by the names the thesis'
 // models use: "TIM1" is TIM1's capture/compare interrupt (its PWM blocks raise it once per period), and "IPCC_RX1"
 // is the line the link to Linux pends when the application's message has arrived (the chip's own IPCC_RX1 carries
-// every RPMsg message and belongs to the link, duet/stm32mp15/linux_link.hpp). The peripherals behind resources
-// ("pwm:TIM1/3", "spi:SPI5", "capture:TIM2/1", "adc:ADC1/6", "ipc:app") are the application's board configuration:
-// it defines read() and write() and routes them to this port's drivers (apps/balbot/board). Each port has a header
-// of this name; CMake chooses which one a build sees.
+// every RPMsg message and belongs to the link, duet/stm32mp15/linux_link.hpp).
+//
+// The peripherals behind the other resources (duet/hardware/resources.hpp: a PWM channel, an SPI bus, ...) are the
+// application's board configuration: which DMA stream, which buffers. It routes each resource its model uses by
+// declaring the typed call for it in its duet/hardware/board_routes.hpp (an explicit specialization: apps/balbot/board/
+// routes) and defining it with this port's drivers. A resource it does not route reaches the templates below, which
+// do not compile: the board cannot silently lack what the model uses. Values travel in their own types; nothing here
+// compares names or converts doubles at run time. Each port has a header of this name; CMake chooses which one a
+// build sees.
 
 #include <cstdint>
 #include <span>
 #include <string_view>
 
+#include "duet/hardware/resources.hpp"
 #include "duet/stm32mp15/board.hpp"
 #include "duet/stm32mp15/gpio.hpp"
 
@@ -48,9 +54,49 @@ consteval std::uint16_t interrupt_number(std::string_view name) {
   return static_cast<std::uint16_t>(stm32mp15::interrupt_by_name(name));
 }
 
-// The application's peripherals (apps/balbot/board/robot_hardware.cpp for the robot).
-void write(std::string_view resource, std::span<const double> values);
-void read(std::string_view resource, std::span<double> values);
+namespace detail {
+template <auto resource>
+inline constexpr bool routed_by_the_board = false;  // a specialization in board_routes.hpp is the routing
+}  // namespace detail
+
+template <PwmChannel channel>
+void pwm_write(float) {
+  static_assert(detail::routed_by_the_board<channel>, "the board routes no such PWM channel: see board_routes.hpp");
+}
+template <CaptureChannel channel>
+CaptureReading capture_read() {
+  static_assert(detail::routed_by_the_board<channel>, "the board routes no such capture channel: see board_routes.hpp");
+  return {};
+}
+template <SpiBus bus>
+void spi_transfer(std::span<const std::uint8_t>) {
+  static_assert(detail::routed_by_the_board<bus>, "the board routes no such SPI bus: see board_routes.hpp");
+}
+template <SpiBus bus>
+void spi_received(std::span<std::uint8_t>) {
+  static_assert(detail::routed_by_the_board<bus>, "the board routes no such SPI bus: see board_routes.hpp");
+}
+template <AdcInput input>
+void adc_start(std::uint16_t) {
+  static_assert(detail::routed_by_the_board<input>, "the board routes no such ADC input: see board_routes.hpp");
+}
+template <AdcInput input>
+void adc_samples(std::span<std::uint16_t>) {
+  static_assert(detail::routed_by_the_board<input>, "the board routes no such ADC input: see board_routes.hpp");
+}
+template <ExtiLine line>
+bool exti_level() {
+  static_assert(detail::routed_by_the_board<line>, "the board routes no such EXTI line: see board_routes.hpp");
+  return false;
+}
+template <IpcChannel channel>
+void ipc_send(std::span<const std::uint8_t>) {
+  static_assert(detail::routed_by_the_board<channel>, "the board routes no such IPC channel: see board_routes.hpp");
+}
+template <IpcChannel channel>
+void ipc_receive(std::span<std::uint8_t>) {
+  static_assert(detail::routed_by_the_board<channel>, "the board routes no such IPC channel: see board_routes.hpp");
+}
 
 inline void gpio_write(const Pin& pin, bool level) {
   stm32mp15::GpioPort{stm32mp15::gpio_base(pin.port)}.set(pin.number, level);
@@ -58,3 +104,8 @@ inline void gpio_write(const Pin& pin, bool level) {
 inline bool gpio_read(const Pin& pin) { return stm32mp15::GpioPort{stm32mp15::gpio_base(pin.port)}.read(pin.number); }
 
 }  // namespace duet::hardware
+
+// The application's routes, if it has any (an image whose model uses only pins needs none).
+#if __has_include("duet/hardware/board_routes.hpp")
+#include "duet/hardware/board_routes.hpp"
+#endif
