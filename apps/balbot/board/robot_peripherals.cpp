@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 
+#include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/cortex_m/interrupts.hpp"
 #include "duet/hardware/hardware.hpp"
@@ -21,6 +22,7 @@
 #include "duet/stm32mp15/exti.hpp"
 #include "duet/stm32mp15/fault.hpp"
 #include "duet/stm32mp15/gpio.hpp"
+#include "duet/stm32mp15/hsem.hpp"
 #include "duet/stm32mp15/rcc.hpp"
 #include "duet/stm32mp15/spi.hpp"
 #include "duet/stm32mp15/timer.hpp"
@@ -103,26 +105,28 @@ void start_clocks() {
   for (const unsigned port : {0U, 3U, 4U, 5U, 6U, 7U}) rcc.enable(chip::clock::gpio(port));  // A, D-H
   for (const chip::PeripheralClock clock :
        {chip::clock::tim1, chip::clock::tim2, chip::clock::tim4, chip::clock::tim5, chip::clock::spi5,
-        chip::clock::dma2, chip::clock::dmamux, chip::clock::adc12}) {
+        chip::clock::dma2, chip::clock::dmamux, chip::clock::adc12, chip::clock::hsem}) {
     rcc.enable(clock);
   }
 }
 
 // Alternate functions from the STM32MP157's datasheet (DS12505): TIM1 and TIM2 are AF1, TIM4 and TIM5 AF2, SPI5
-// AF5. PF12 (ADC1_INP6) stays in its reset mode, analog.
-void start_pins() {
+// AF5 (PF7 SCK, PF8 MISO, PF9 MOSI). PF12 (ADC1_INP6) stays in its reset mode, analog. False if a pin's
+// configuration could not take the GPIO hardware semaphore from Linux.
+bool start_pins() {
   using hardware::pin;
+  bool configured = true;
   // Outputs, low first (the motor driver in standby, TRIG and FSYNC idle), then the IMU's chip select high (idle).
   constexpr std::array outputs{pin("PA12"), pin("PE9"),  pin("PD1"), pin("PE10"),
                                pin("PD14"), pin("PE11"), pin("PE1"), imu_chip_select};
   for (const hardware::Pin output : outputs) {
     hardware::gpio_write(output, false);
-    chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number);
+    configured = chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number) && configured;
   }
   hardware::gpio_write(imu_chip_select, true);
   constexpr std::array inputs{pin("PH6"), pin("PG3"), pin("PE8")};  // hall B signals, the IMU's INT
   for (const hardware::Pin input : inputs) {
-    chip::GpioPort{chip::gpio_base(input.port)}.make_input(input.number, chip::Pull::none);
+    configured = chip::GpioPort{chip::gpio_base(input.port)}.make_input(input.number, chip::Pull::none) && configured;
   }
   constexpr struct {
     hardware::Pin pin;
@@ -130,8 +134,23 @@ void start_pins() {
   } alternates[] = {{pin("PE13"), 1}, {pin("PE14"), 1}, {pin("PG8"), 1}, {pin("PD15"), 2},
                     {echo_pin, 2},    {pin("PF7"), 5},  {pin("PF8"), 5}, {pin("PF9"), 5}};
   for (const auto& alternate : alternates) {
-    chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number, alternate.function);
+    configured = chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number,
+                                                                                     alternate.function) &&
+                 configured;
   }
+  return configured;
+}
+
+// The pins and the IMU's EXTI line, each changed holding its hardware semaphore; when Linux kept one, the log says how
+// many takes gave up.
+bool start_shared_registers() {
+  if (start_pins() && exti.connect(imu_interrupt_line, hardware::pin("PE8").port, true, false)) return true;
+  duet::TextBuffer<96> line;
+  line.append("balbot: a GPIO or EXTI hardware semaphore stayed with Linux (")
+      .append(chip::Hsem::failed_takes())
+      .append(" takes gave up)\n");
+  duet::cortex_m::console_write(line.view());
+  return false;
 }
 
 // A resource the robot's board has not: the model names a peripheral this configuration does not route. Said once in
@@ -194,12 +213,10 @@ namespace balbot::board {
 bool start_peripherals() {
   chip::set_safe_state({safe_pins, safe_timers});
   start_clocks();
-  start_pins();
-  if (!start_timers() || !start_imu_bus() || !start_battery_adc()) {
+  if (!start_shared_registers() || !start_timers() || !start_imu_bus() || !start_battery_adc()) {
     chip::enter_safe_state();
     return false;
   }
-  exti.connect(imu_interrupt_line, hardware::pin("PE8").port, true, false);
   pwm_timer.start();
   return true;
 }

@@ -27,6 +27,8 @@ TEST_F(RccTest, EachClockIsOneBitInItsSetRegister) {
   EXPECT_EQ(reg(0xA98), 1U << 2);
   rcc.enable(clock::ipcc);
   EXPECT_EQ(reg(0xAA0), 1U << 12);
+  rcc.enable(clock::hsem);
+  EXPECT_EQ(reg(0xAA0), 1U << 11);
   rcc.enable(clock::gpio(7));  // GPIOH
   EXPECT_EQ(reg(0xAA8), 1U << 7);
 }

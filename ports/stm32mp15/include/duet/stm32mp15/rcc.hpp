@@ -23,7 +23,7 @@ inline constexpr std::uint32_t apb1 = 0xA80, apb2 = 0xA88, ahb2 = 0xA98, ahb3 = 
 inline constexpr PeripheralClock tim2{apb1, 0}, tim4{apb1, 2}, tim5{apb1, 3}, tim7{apb1, 5};
 inline constexpr PeripheralClock tim1{apb2, 0}, spi5{apb2, 10};
 inline constexpr PeripheralClock dma2{ahb2, 1}, dmamux{ahb2, 2}, adc12{ahb2, 5};
-inline constexpr PeripheralClock ipcc{ahb3, 12};
+inline constexpr PeripheralClock hsem{ahb3, 11}, ipcc{ahb3, 12};
 // GPIOA .. GPIOK: port 0 is A.
 constexpr PeripheralClock gpio(unsigned port) { return {ahb4, port}; }
 }  // namespace clock
