@@ -164,7 +164,27 @@ void unknown_resource(std::string_view resource) {
   duet::cortex_m::console_write("\n");
 }
 
-bool start_imu_bus() { return imu_bus.start(chip::spi5_kernel_clock_hz, imu_clock_hz); }
+// SPI5 at the fastest clock of at most 1 MHz from the kernel clock RCC says it has, the choice in the log. A kernel
+// clock duet cannot tell the rate of gets the slowest divider.
+bool start_imu_bus() {
+  using ImuBus = decltype(imu_bus);
+  const chip::KernelClock kernel = chip::Rcc{}.spi45_kernel_clock(chip::core_clock_hz, chip::hse_clock_hz);
+  const std::uint32_t setting = ImuBus::baud_rate_setting(kernel.hz, imu_clock_hz);
+  duet::TextBuffer<160> line;
+  line.append("balbot: SPI5's kernel clock is ").append(chip::name(kernel.source));
+  if (setting == ImuBus::no_baud_rate) {
+    line.append(' ').append(kernel.hz).append(" Hz: too fast for any divider, the IMU is not started\n");
+  } else if (kernel.hz == 0) {
+    line.append(", at a rate duet cannot tell: error, the slowest divider ")
+        .append(ImuBus::divider(setting))
+        .append(" (SCK at most 1 MHz for a kernel clock of at most 256 MHz)\n");
+  } else {
+    line.append(' ').append(kernel.hz).append(" Hz, divider ").append(ImuBus::divider(setting));
+    line.append(": SCK ").append(kernel.hz / ImuBus::divider(setting)).append(" Hz\n");
+  }
+  duet::cortex_m::console_write(line.view());
+  return imu_bus.start(kernel.hz, imu_clock_hz);
+}
 bool start_battery_adc() {
   return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz);
 }
