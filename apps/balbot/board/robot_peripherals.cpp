@@ -170,21 +170,21 @@ bool start_imu_bus() {
   using ImuBus = decltype(imu_bus);
   const chip::KernelClock kernel = chip::Rcc{}.spi45_kernel_clock(chip::core_clock_hz, chip::hse_clock_hz);
   const std::uint32_t setting = ImuBus::baud_rate_setting(kernel.hz, imu_clock_hz);
-  duet::TextBuffer<160> line;
-  line.append("balbot: SPI5's kernel clock is ").append(chip::name(kernel.source));
+  std::string_view verdict = "";
   if (setting == ImuBus::no_baud_rate) {
-    line.append(' ').append(kernel.hz).append(" Hz: too fast for any divider, the IMU is not started\n");
+    verdict = ": too fast for any divider, the IMU is not started";
   } else if (kernel.hz == 0) {
-    line.append(", at a rate duet cannot tell: error, the slowest divider ")
-        .append(ImuBus::divider(setting))
-        .append(" (SCK at most 1 MHz for a kernel clock of at most 256 MHz)\n");
-  } else {
-    line.append(' ').append(kernel.hz).append(" Hz, divider ").append(ImuBus::divider(setting));
-    line.append(": SCK ").append(kernel.hz / ImuBus::divider(setting)).append(" Hz\n");
+    verdict = ": error, a rate duet cannot tell (shown as 0): the slowest divider, SCK at most 1 MHz up to 256 MHz";
   }
+  const std::uint32_t divider = setting == ImuBus::no_baud_rate ? 0 : ImuBus::divider(setting);
+  duet::TextBuffer<192> line;
+  line.append("balbot: SPI5's kernel clock is ").append(chip::name(kernel.source)).append(' ').append(kernel.hz);
+  line.append(" Hz, divider ").append(divider).append(": SCK ").append(divider == 0 ? 0 : kernel.hz / divider);
+  line.append(" Hz").append(verdict).append('\n');
   duet::cortex_m::console_write(line.view());
   return imu_bus.start(kernel.hz, imu_clock_hz);
 }
+
 bool start_battery_adc() {
   return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz);
 }
