@@ -134,9 +134,9 @@ bool start_pins() {
   } alternates[] = {{pin("PE13"), 1}, {pin("PE14"), 1}, {pin("PG8"), 1}, {pin("PD15"), 2},
                     {echo_pin, 2},    {pin("PF7"), 5},  {pin("PF8"), 5}, {pin("PF9"), 5}};
   for (const auto& alternate : alternates) {
-    configured = chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number,
-                                                                                     alternate.function) &&
-                 configured;
+    configured =
+        chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number, alternate.function) &&
+        configured;
   }
   return configured;
 }

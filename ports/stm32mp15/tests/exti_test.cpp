@@ -27,7 +27,7 @@ TEST_F(ExtiTest, TheImusInterruptOnPe8) {
   reg(Exti::exticr1 + 8) = 0x0101'0101;  // lines 8-11 on port B
   reg(Exti::ftsr1) = 0xFFFF;
   EXPECT_TRUE(exti.connect(8, 4, true, false));
-  EXPECT_EQ(semaphore_release(), Hsem::m4_core);  // released after
+  EXPECT_EQ(semaphore_release(), Hsem::m4_core);    // released after
   EXPECT_EQ(reg(Exti::exticr1 + 8), 0x0101'0104U);  // EXTICR3's first field: port E
   EXPECT_EQ(reg(Exti::rtsr1), 1U << 8);
   EXPECT_EQ(reg(Exti::ftsr1), 0xFEFFU);

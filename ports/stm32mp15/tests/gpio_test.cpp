@@ -31,7 +31,7 @@ TEST_F(GpioTest, TheRobotsPortsAreWhereTheManualSays) {
 TEST_F(GpioTest, AnOutputChangesOnlyItsPinsFields) {
   reg(GpioPort::moder) = 0xFFFF'FFFF;  // every pin analog, as after reset
   reg(GpioPort::otyper) = 0xFFFF;
-  EXPECT_TRUE(port.make_output(12));  // MTR_STBY, PA12
+  EXPECT_TRUE(port.make_output(12));              // MTR_STBY, PA12
   EXPECT_EQ(semaphore_release(), Hsem::m4_core);  // released after
   EXPECT_EQ(reg(GpioPort::moder), 0xFDFF'FFFFU);
   EXPECT_EQ(reg(GpioPort::otyper), 0xEFFFU);

@@ -34,7 +34,7 @@ TEST_F(HsemTest, ATakeSucceedsWhenTheReadFindsTheM4sLockAndTheReleaseClearsIt) {
   EXPECT_TRUE(hsem.take(semaphore::exti));
   hsem.release(semaphore::exti);
   EXPECT_EQ(write_lock(semaphore::exti), 0x200U);  // COREID 2, PROCID 0, LOCK 0
-  EXPECT_EQ(write_lock(semaphore::gpio), 0U);       // the other semaphores untouched
+  EXPECT_EQ(write_lock(semaphore::gpio), 0U);      // the other semaphores untouched
   EXPECT_EQ(Hsem::failed_takes(), failed_before);
 }
 

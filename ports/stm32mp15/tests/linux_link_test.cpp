@@ -205,9 +205,9 @@ TEST_F(LinuxLinkTest, LinuxsFirstDoorbellAfterADetachNeitherHoldsTheInterruptNor
   ASSERT_TRUE(link.try_start());
   EXPECT_TRUE(receive_interrupt_raised());  // unmasked for the new session: the kept doorbell interrupts again
   link.serve();
-  EXPECT_EQ(attached_again.receive().size(), 2U);  // into the buffers it offered: both channels announced again
+  EXPECT_EQ(attached_again.receive().size(), 2U);    // into the buffers it offered: both channels announced again
   EXPECT_EQ(ipcc_register(Ipcc::c2mr), 0x3F'0030U);  // served, so unmasked
-  ipcc_register(Ipcc::c1toc2sr) = 0;                  // what the acknowledgement does on the chip
+  ipcc_register(Ipcc::c1toc2sr) = 0;                 // what the acknowledgement does on the chip
 
   ASSERT_TRUE(attached_again.send(0x600, LinuxLink::xcp_address, {0x42}));  // and the next doorbell interrupts
   ring(ipcc_channel::vring1);

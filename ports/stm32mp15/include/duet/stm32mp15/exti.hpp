@@ -33,7 +33,7 @@ class Exti {
       modify(ftsr1, 1U << line, falling ? 1U << line : 0U);
     });
     if (!changed) return false;
-    acknowledge(line);  // an edge from before is no event
+    acknowledge(line);              // an edge from before is no event
     modify(c2imr1, 0, 1U << line);  // the M4's own mask: Linux writes C1IMR1
     return true;
   }

@@ -97,8 +97,8 @@ class SpiMaster {
 
   // At start-up, before the DMA interrupts are on: master, 8-bit frames, mode 3, the fastest clock of at most
   // `max_clock_hz` (the MPU6500 takes 1 MHz for every register) from the SPI's `kernel_clock_hz` (0: not known, the
-  // slowest divider), both streams on the driver's buffers. Stops whatever a previous firmware left running. False, nothing touched, when even the
-  // divider 256 is too fast; false when a stream has not stopped yet (try again).
+  // slowest divider), both streams on the driver's buffers. Stops whatever a previous firmware left running. False,
+  // nothing touched, when even the divider 256 is too fast; false when a stream has not stopped yet (try again).
   [[nodiscard]] bool start(std::uint32_t kernel_clock_hz, std::uint32_t max_clock_hz) {
     const std::uint32_t setting = baud_rate_setting(kernel_clock_hz, max_clock_hz);
     if (setting == no_baud_rate) return false;
