@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 
+#include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/cortex_m/interrupts.hpp"
 #include "duet/hardware/hardware.hpp"
@@ -21,6 +22,7 @@
 #include "duet/stm32mp15/exti.hpp"
 #include "duet/stm32mp15/fault.hpp"
 #include "duet/stm32mp15/gpio.hpp"
+#include "duet/stm32mp15/hsem.hpp"
 #include "duet/stm32mp15/rcc.hpp"
 #include "duet/stm32mp15/spi.hpp"
 #include "duet/stm32mp15/timer.hpp"
@@ -94,26 +96,28 @@ void start_clocks() {
   for (const unsigned port : {0U, 3U, 4U, 5U, 6U, 7U}) rcc.enable(chip::clock::gpio(port));  // A, D-H
   for (const chip::PeripheralClock clock :
        {chip::clock::tim1, chip::clock::tim2, chip::clock::tim4, chip::clock::tim5, chip::clock::spi5,
-        chip::clock::dma2, chip::clock::dmamux, chip::clock::adc12}) {
+        chip::clock::dma2, chip::clock::dmamux, chip::clock::adc12, chip::clock::hsem}) {
     rcc.enable(clock);
   }
 }
 
 // Alternate functions from the STM32MP157's datasheet (DS12505): TIM1 and TIM2 are AF1, TIM4 and TIM5 AF2, SPI5
-// AF5. PF12 (ADC1_INP6) stays in its reset mode, analog.
-void start_pins() {
+// AF5 (PF7 SCK, PF8 MISO, PF9 MOSI). PF12 (ADC1_INP6) stays in its reset mode, analog. False if a pin's
+// configuration could not take the GPIO hardware semaphore from Linux.
+bool start_pins() {
   using hardware::pin;
+  bool configured = true;
   // Outputs, low first (the motor driver in standby, TRIG and FSYNC idle), then the IMU's chip select high (idle).
   constexpr std::array outputs{pin("PA12"), pin("PE9"),  pin("PD1"), pin("PE10"),
                                pin("PD14"), pin("PE11"), pin("PE1"), imu_chip_select};
   for (const hardware::Pin output : outputs) {
     hardware::gpio_write(output, false);
-    chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number);
+    configured = chip::GpioPort{chip::gpio_base(output.port)}.make_output(output.number) && configured;
   }
   hardware::gpio_write(imu_chip_select, true);
   constexpr std::array inputs{pin("PH6"), pin("PG3"), pin("PE8")};  // hall B signals, the IMU's INT
   for (const hardware::Pin input : inputs) {
-    chip::GpioPort{chip::gpio_base(input.port)}.make_input(input.number, chip::Pull::none);
+    configured = chip::GpioPort{chip::gpio_base(input.port)}.make_input(input.number, chip::Pull::none) && configured;
   }
   constexpr struct {
     hardware::Pin pin;
@@ -121,11 +125,46 @@ void start_pins() {
   } alternates[] = {{pin("PE13"), 1}, {pin("PE14"), 1}, {pin("PG8"), 1}, {pin("PD15"), 2},
                     {echo_pin, 2},    {pin("PF7"), 5},  {pin("PF8"), 5}, {pin("PF9"), 5}};
   for (const auto& alternate : alternates) {
-    chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number, alternate.function);
+    configured =
+        chip::GpioPort{chip::gpio_base(alternate.pin.port)}.make_alternate(alternate.pin.number, alternate.function) &&
+        configured;
   }
+  return configured;
 }
 
-bool start_imu_bus() { return imu_bus.start(chip::spi5_kernel_clock_hz, imu_clock_hz); }
+// The pins and the IMU's EXTI line, each changed holding its hardware semaphore; when Linux kept one, the log says how
+// many takes gave up.
+bool start_shared_registers() {
+  if (start_pins() && exti.connect(imu_interrupt_line, hardware::pin("PE8").port, true, false)) return true;
+  duet::TextBuffer<96> line;
+  line.append("balbot: a GPIO or EXTI hardware semaphore stayed with Linux (")
+      .append(chip::Hsem::failed_takes())
+      .append(" takes gave up)\n");
+  duet::cortex_m::console_write(line.view());
+  return false;
+}
+
+// SPI5 at the fastest clock of at most 1 MHz from the kernel clock RCC says it has, the choice in the log. A kernel
+// clock duet cannot tell the rate of gets the slowest divider.
+bool start_imu_bus() {
+  using ImuBus = decltype(imu_bus);
+  const chip::KernelClock kernel = chip::Rcc{}.spi45_kernel_clock(chip::core_clock_hz, chip::hse_clock_hz);
+  const std::uint32_t setting = ImuBus::baud_rate_setting(kernel.hz, imu_clock_hz);
+  std::string_view verdict = "";
+  if (setting == ImuBus::no_baud_rate) {
+    verdict = ": too fast for any divider, the IMU is not started";
+  } else if (kernel.hz == 0) {
+    verdict = ": error, a rate duet cannot tell (shown as 0): the slowest divider, SCK at most 1 MHz up to 256 MHz";
+  }
+  const std::uint32_t divider = setting == ImuBus::no_baud_rate ? 0 : ImuBus::divider(setting);
+  duet::TextBuffer<192> line;
+  line.append("balbot: SPI5's kernel clock is ").append(chip::name(kernel.source)).append(' ').append(kernel.hz);
+  line.append(" Hz, divider ").append(divider).append(": SCK ").append(divider == 0 ? 0 : kernel.hz / divider);
+  line.append(" Hz").append(verdict).append('\n');
+  duet::cortex_m::console_write(line.view());
+  return imu_bus.start(kernel.hz, imu_clock_hz);
+}
+
 bool start_battery_adc() {
   return battery_adc.power_up(battery_channel, chip::adc_kernel_clock_hz, chip::core_clock_hz);
 }
@@ -173,12 +212,10 @@ namespace balbot::board {
 bool start_peripherals() {
   chip::set_safe_state({safe_pins, safe_timers});
   start_clocks();
-  start_pins();
-  if (!start_timers() || !start_imu_bus() || !start_battery_adc()) {
+  if (!start_shared_registers() || !start_timers() || !start_imu_bus() || !start_battery_adc()) {
     chip::enter_safe_state();
     return false;
   }
-  exti.connect(imu_interrupt_line, hardware::pin("PE8").port, true, false);
   pwm_timer.start();
   return true;
 }

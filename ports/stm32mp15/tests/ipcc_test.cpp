@@ -1,5 +1,5 @@
-// The IPCC driver against a fake register file: the start-up sequence, which doorbells are pending, acknowledging,
-// and ringing only a doorbell Linux has taken.
+// The IPCC driver against a fake register file: the start-up sequence, masking and unmasking doorbells, which are
+// pending, acknowledging, and ringing only a doorbell Linux has taken.
 #include "duet/stm32mp15/ipcc.hpp"
 
 #include <gtest/gtest.h>
@@ -17,26 +17,39 @@ class IpccTest : public ::testing::Test {
   Ipcc ipcc{reinterpret_cast<std::uintptr_t>(registers.data())};
 };
 
-TEST_F(IpccTest, StartsMaskedAndClearedThenListensToTheChannelsAsked) {
+TEST_F(IpccTest, StartsWithEveryChannelMaskedAndCleared) {
   registers.fill(0xFFFF'FFFF);
   reg(Ipcc::c1toc2sr) = 0;
-  ipcc.start(1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown);
+  reg(Ipcc::c2mr) = 0;  // a previous firmware's unmasked channels
+  ipcc.start();
   EXPECT_EQ(reg(Ipcc::c2scr), 0x3FU);        // every channel's flag cleared
-  EXPECT_EQ(reg(Ipcc::c2mr), 0x003F'0038U);  // free-channel interrupts masked, channels 0-2 unmasked
+  EXPECT_EQ(reg(Ipcc::c2mr), 0x003F'003FU);  // every channel masked, receive and free
   EXPECT_EQ(reg(Ipcc::c2cr), Ipcc::receive_interrupt);
   EXPECT_EQ(reg(Ipcc::c1cr), 0xFFFF'FFFFU);  // Linux's registers untouched
 }
 
-TEST_F(IpccTest, PendingIsWhatLinuxRangAndWeListenTo) {
-  ipcc.start(1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown);
+TEST_F(IpccTest, MaskingAndUnmaskingChangeOnlyTheReceiveMasksAsked) {
+  ipcc.start();
+  ipcc.unmask_receive(1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown);
+  EXPECT_EQ(reg(Ipcc::c2mr), 0x003F'0038U);  // free-channel interrupts still masked, channels 0-2 unmasked
+  ipcc.mask_receive(1U << ipcc_channel::vring1);
+  EXPECT_EQ(reg(Ipcc::c2mr), 0x003F'003AU);
+  ipcc.unmask_receive(0xFFFF'FFFF);  // never a free-channel mask
+  EXPECT_EQ(reg(Ipcc::c2mr), 0x003F'0000U);
+}
+
+TEST_F(IpccTest, PendingIsWhatLinuxRangAndIsUnmasked) {
+  ipcc.start();
+  ipcc.unmask_receive(1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown);
   reg(Ipcc::c1toc2sr) = 1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown;
   EXPECT_EQ(ipcc.pending(), 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown);
+  EXPECT_EQ(ipcc.rung(), 1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 | 1U << ipcc_channel::shutdown);
   ipcc.acknowledge(ipcc_channel::shutdown);
   EXPECT_EQ(reg(Ipcc::c2scr), 1U << ipcc_channel::shutdown);  // CH3C: write one to clear
 }
 
 TEST_F(IpccTest, RingsOnlyADoorbellLinuxHasTaken) {
-  ipcc.start(0);
+  ipcc.start();
   reg(Ipcc::c2scr) = 0;
   reg(Ipcc::c2toc1sr) = 1U << ipcc_channel::vring0;  // still set from the last ring
   EXPECT_FALSE(ipcc.ring(ipcc_channel::vring0));

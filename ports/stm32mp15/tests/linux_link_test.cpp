@@ -1,7 +1,7 @@
 // The M4's link to Linux on the PC: a resource table as remoteproc fills it, a Linux side in shared memory that
 // behaves as rpmsg_virtio does, and the IPCC as a fake register file. The link waits for DRIVER_OK, announces XCP
-// then the application channel as rpmsg-tty, carries bytes both ways, and answers Linux's shutdown request after
-// the outputs are safe.
+// then the application channel as rpmsg-tty, carries bytes both ways, answers Linux's shutdown request after
+// the outputs are safe, and survives a detach, however early Linux rings for its next session.
 #include "duet/stm32mp15/linux_link.hpp"
 
 #include <gtest/gtest.h>
@@ -44,6 +44,24 @@ class LinuxLinkTest : public ::testing::Test {
   // Linux rings `channel` for the M4.
   void ring(unsigned channel) { ipcc_register(Ipcc::c1toc2sr) |= 1U << channel; }
   std::uint32_t& ipcc_register(std::uint32_t offset) { return ipcc_registers[offset / 4]; }
+  // IPCC_RX1 as the NVIC sees it: the receive interrupt on, a doorbell rung and not masked.
+  bool receive_interrupt_raised() {
+    return (ipcc_register(Ipcc::c2cr) & Ipcc::receive_interrupt) != 0 &&
+           (ipcc_register(Ipcc::c1toc2sr) & ~ipcc_register(Ipcc::c2mr) & Ipcc::all_channels) != 0;
+  }
+  // A session up, then Linux detaches (remoteproc's detach) and the link acknowledges.
+  void attach_then_detach() {
+    linux_is_ready();
+    ASSERT_TRUE(link.try_start());
+    link.serve();
+    linux_side.receive();
+    ipcc_register(Ipcc::c1toc2sr) = 1U << ipcc_channel::detach;
+    link.serve();
+    ASSERT_FALSE(link.started());
+    ipcc_register(Ipcc::c1toc2sr) = 0;  // what the acknowledgement does on the chip
+    table.vdev.status = 0;              // Linux resets the device before attaching again
+    ASSERT_FALSE(link.try_start());
+  }
 
   LinuxSide linux_side;
   ResourceTable table{};
@@ -168,6 +186,49 @@ TEST_F(LinuxLinkTest, AfterADetachANewSessionStartsWhenLinuxAttachesAgain) {
   const auto answers = attached_again.receive();
   ASSERT_EQ(answers.size(), 1U);
   EXPECT_EQ(answers[0].destination, 0x600U);  // learnt anew, not the old session's 0x500
+}
+
+TEST_F(LinuxLinkTest, LinuxsFirstDoorbellAfterADetachNeitherHoldsTheInterruptNorIsLost) {
+  attach_then_detach();
+  // Linux attaches again and rings at once: rpmsg_virtio offers its receive buffers (vring0) as soon as DRIVER_OK is
+  // set, and IPCC_RX1 runs before the background loop gets to try_start().
+  LinuxSide attached_again;
+  table.vdev.status = 0x07;
+  ring(ipcc_channel::vring0);
+  ASSERT_TRUE(receive_interrupt_raised());
+  ipcc_register(Ipcc::c2scr) = 0;
+  link.serve();
+  EXPECT_FALSE(receive_interrupt_raised());   // masked: the interrupt ends, the background loop runs
+  EXPECT_EQ(ipcc_register(Ipcc::c2scr), 0U);  // not acknowledged: kept for the session that serves it
+  EXPECT_TRUE(attached_again.receive().empty());
+
+  ASSERT_TRUE(link.try_start());
+  EXPECT_TRUE(receive_interrupt_raised());  // unmasked for the new session: the kept doorbell interrupts again
+  link.serve();
+  EXPECT_EQ(attached_again.receive().size(), 2U);    // into the buffers it offered: both channels announced again
+  EXPECT_EQ(ipcc_register(Ipcc::c2mr), 0x3F'0030U);  // served, so unmasked
+  ipcc_register(Ipcc::c1toc2sr) = 0;                 // what the acknowledgement does on the chip
+
+  ASSERT_TRUE(attached_again.send(0x600, LinuxLink::xcp_address, {0x42}));  // and the next doorbell interrupts
+  ring(ipcc_channel::vring1);
+  EXPECT_TRUE(receive_interrupt_raised());
+  link.serve();
+  EXPECT_EQ(xcp.received.back(), 0x42);
+}
+
+TEST_F(LinuxLinkTest, AShutdownRungWhileTheLinkIsDownIsServedByTheNextSession) {
+  attach_then_detach();
+  LinuxSide attached_again;
+  table.vdev.status = 0x07;
+  ring(ipcc_channel::shutdown);  // Linux attached and stops the core at once
+  link.serve();
+  EXPECT_FALSE(receive_interrupt_raised());
+  EXPECT_EQ(safe_states, 0);  // the link is down: served once the session is up
+  ASSERT_TRUE(link.try_start());
+  EXPECT_TRUE(receive_interrupt_raised());
+  link.serve();
+  EXPECT_EQ(safe_states, 1);
+  EXPECT_EQ(link.shutdown_requests(), 1U);
 }
 
 // The firmware's XCP slave behind the link, as the robot's firmware has it: a master's CONNECT and SHORT_UPLOAD go in

@@ -63,6 +63,22 @@ TEST_F(SpiTest, BaudRateIsTheFastestAtMostTheLimit) {
   EXPECT_EQ(Spi::baud_rate_setting(256'000'000, 1'000'000), 7U);
   EXPECT_EQ(Spi::baud_rate_setting(256'000'001, 1'000'000), Spi::no_baud_rate);
   EXPECT_EQ(Spi::baud_rate_setting(0xFFFF'FFFF, 0xFFFF'FFFF), 0U);
+  EXPECT_EQ(Spi::divider(6), 128U);
+}
+
+// Each kernel clock the RCC may report (rcc_test.cpp): PCLK2 on the DK2, HSI, CSI, the DK2's HSE, and one whose rate
+// is unknown (0 Hz), which gets the slowest divider rather than the fastest.
+TEST_F(SpiTest, StartsAtMostAt1MhzFromEachKernelClock) {
+  constexpr struct {
+    std::uint32_t kernel_hz;
+    std::uint32_t mbr;
+  } cases[] = {{104'500'000, 6}, {64'000'000, 5}, {4'000'000, 1}, {24'000'000, 4}, {0, 7}};
+  for (const auto& [kernel_hz, mbr] : cases) {
+    reg(Spi::cfg1) = 0x0007'0007;
+    ASSERT_TRUE(spi.start(kernel_hz, 1'000'000)) << kernel_hz;
+    EXPECT_EQ(reg(Spi::cfg1) >> Spi::baud_rate_shift, mbr) << kernel_hz;
+    EXPECT_LE(kernel_hz / Spi::divider(mbr), 1'000'000U) << kernel_hz;
+  }
 }
 
 TEST_F(SpiTest, StartsAMode3MasterOnBothStreams) {

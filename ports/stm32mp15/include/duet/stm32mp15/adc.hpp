@@ -45,8 +45,11 @@ class AdcSampler {
   static constexpr std::uint32_t overrun = 1U << 4U;            // OVR
   // CR
   static constexpr std::uint32_t enable = 1U << 0U;                     // ADEN
+  static constexpr std::uint32_t disable = 1U << 1U;                    // ADDIS
   static constexpr std::uint32_t start_conversions = 1U << 2U;          // ADSTART
+  static constexpr std::uint32_t start_injected = 1U << 3U;             // JADSTART
   static constexpr std::uint32_t stop_conversions = 1U << 4U;           // ADSTP
+  static constexpr std::uint32_t stop_injected = 1U << 5U;              // JADSTP
   static constexpr std::uint32_t boost = 1U << 8U;                      // BOOST
   static constexpr std::uint32_t linearity_calibration = 1U << 16U;     // ADCALLIN
   static constexpr std::uint32_t regulator = 1U << 28U;                 // ADVREGEN
@@ -80,16 +83,19 @@ class AdcSampler {
   // At start-up, before the DMA interrupt is on; blocks for the ADC's start-up, each wait bounded (counted in reads
   // of the ADC's registers, each at least one core cycle). From the ADC's `kernel_clock_hz` with the core at
   // `cpu_clock_hz`: out of deep power-down, regulator on and settled, single-ended offset and linearity
-  // calibration, enabled, then `channel` (0-19) preselected and alone in the regular sequence. The other ADC of the
-  // pair must be disabled too (RM0436: the common clock setting only then). False, nothing touched, for a channel
-  // or clock it cannot take, or an ADC already enabled (by a previous firmware: reset it through the RCC first);
-  // false when calibration or ADRDY do not come in time.
+  // calibration, enabled, then `channel` (0-19) preselected and alone in the regular sequence. An ADC a previous
+  // firmware left enabled (remoteproc restarts the M4 without resetting its peripherals) is stopped and disabled
+  // first, and its stream stopped. The other ADC of the pair must be disabled too (RM0436: the common clock setting
+  // only then). False, nothing touched, for a channel or clock it cannot take; false when stopping, disabling,
+  // calibration or ADRDY do not come in time.
   [[nodiscard]] bool power_up(unsigned channel, std::uint32_t kernel_clock_hz, std::uint32_t cpu_clock_hz) {
     const std::uint32_t adc_clock_hz = kernel_clock_hz / 2U;
-    if (channel > max_channel || adc_clock_hz == 0 || adc_clock_hz > max_clock_hz || cpu_clock_hz == 0 ||
-        (read(cr) & enable) != 0) {
+    if (channel > max_channel || adc_clock_hz == 0 || adc_clock_hz > max_clock_hz || cpu_clock_hz == 0) {
       return false;
     }
+    const std::uint64_t core_cycles_per_adc_cycle = (std::uint64_t{cpu_clock_hz} + adc_clock_hz - 1U) / adc_clock_hz;
+    const std::uint64_t longest_wait = calibration_cycles * core_cycles_per_adc_cycle;
+    if (!stop_previous_use(longest_wait)) return false;
     if (!stream_.configure({.direction = DmaDirection::peripheral_to_memory,
                             .peripheral_address = base_ + dr,
                             .memory_address = reinterpret_cast<std::uintptr_t>(samples_.data()),
@@ -98,8 +104,6 @@ class AdcSampler {
                             .request = request_})) {
       return false;
     }
-    const std::uint64_t core_cycles_per_adc_cycle = (std::uint64_t{cpu_clock_hz} + adc_clock_hz - 1U) / adc_clock_hz;
-    const std::uint64_t longest_wait = calibration_cycles * core_cycles_per_adc_cycle;
     cortex_m::register32(common_base_ + ccr) = clock_divided_by_2;
     control(deep_power_down, 0);
     control(0, regulator);
@@ -160,6 +164,26 @@ class AdcSampler {
 
  private:
   void control(std::uint32_t clear, std::uint32_t set) const { write(cr, (read(cr) & ~(set_only | clear)) | set); }
+  // RM0436's way to disable an ADC: its conversions stopped (ADSTP, JADSTP, each only while its start bit is set),
+  // then ADDIS, which the ADC clears with ADEN; then the stream stopped. Each wait within `polls` reads.
+  [[nodiscard]] bool stop_previous_use(std::uint64_t polls) const {
+    const std::uint32_t running = read(cr) & (start_conversions | start_injected);
+    if (running != 0) {
+      control(0, ((running & start_conversions) != 0 ? stop_conversions : 0U) |
+                     ((running & start_injected) != 0 ? stop_injected : 0U));
+      if (!wait_for(cr, start_conversions | start_injected, 0, polls)) return false;
+    }
+    if ((read(cr) & enable) != 0) {
+      control(0, disable);
+      if (!wait_for(cr, enable, 0, polls)) return false;
+    }
+    if (!stream_.enabled()) return true;
+    stream_.disable();  // it finishes the element under way
+    for (std::uint64_t poll = 0; poll < polls; ++poll) {
+      if (!stream_.enabled()) return true;
+    }
+    return false;
+  }
   // True once (read(offset) & mask) == expected, within `polls` reads.
   [[nodiscard]] bool wait_for(std::uint32_t offset, std::uint32_t mask, std::uint32_t expected,
                               std::uint64_t polls) const {

@@ -11,11 +11,11 @@ namespace duet::stm32mp15 {
 // The M4 runs at the clock that the boot loader and Linux configured: 209 MHz on the STM32MP157C-DK2.
 inline constexpr unsigned core_clock_hz = 209'000'000;
 // Clocks duet assumes and does not set (docs/BOARD.md, "Clocks"): the timers' input clock (APB1 and APB2 timers at
-// the MCU clock on the DK2), SPI5's kernel clock (PCLK2, the MCU clock / 2) and the ADCs' kernel clock (the 24 MHz
-// HSE, ADC12's reset choice being per_ck from it on the DK2's device tree).
+// the MCU clock on the DK2), the ADCs' kernel clock (the 24 MHz HSE, ADC12's reset choice being per_ck from it on
+// the DK2's device tree) and the HSE crystal's rate. SPI5's kernel clock is read from RCC at start-up (rcc.hpp).
 inline constexpr unsigned timer_clock_hz = 209'000'000;
-inline constexpr unsigned spi5_kernel_clock_hz = 104'500'000;
 inline constexpr unsigned adc_kernel_clock_hz = 24'000'000;
+inline constexpr unsigned hse_clock_hz = 24'000'000;
 inline constexpr unsigned device_interrupt_count = 150;
 
 // Every device interrupt with a peripheral, by its name in RM0436's NVIC table (ST's CMSIS names without _IRQn):

@@ -2,8 +2,11 @@
 // The IPCC's doorbells, from the Cortex-M4's side (processor 2; RM0436, IPCC): a channel's flag set by one processor
 // interrupts the other, which clears it when it has taken the message. Channels (0-based): 0 tells Linux of used
 // buffers in vring0 (and Linux tells us it returned some), 1 tells us of a message in vring1, 2 is Linux's shutdown
-// request and 3 its detach request, both to be acknowledged by clearing them. Register level, no HAL; `base` is
-// the block's address (a fake register file in the PC's tests). Never waits: a doorbell still ringing is reported.
+// request and 3 its detach request, both to be acknowledged by clearing them. A channel's flag holds IPCC_RX1
+// pending until it is cleared or the channel masked, so the handler masks what it takes and unmasks it once served
+// (as ST's HAL does): a flag that cannot be cleared yet then never keeps the interrupt running. C2MR is the M4's own
+// register; Linux writes only C1MR. Register level, no HAL; `base` is the block's address (a fake register file in
+// the PC's tests). Never waits: a doorbell still ringing is reported.
 
 #include <cstdint>
 
@@ -30,18 +33,24 @@ class Ipcc {
 
   explicit constexpr Ipcc(std::uintptr_t base = ipcc_base) : base_(base) {}
 
-  // Interrupts off, every channel masked and cleared; then the receive interrupt on, with `channels` (a bit per
-  // channel) unmasked for receiving.
-  void start(std::uint32_t channels) const {
+  // Interrupts off, every channel masked and its flag cleared (whatever a previous firmware left); then the receive
+  // interrupt on. No channel interrupts until unmask_receive() lets it.
+  void start() const {
     write(c2cr, 0);
     write(c2mr, all_channels | all_channels << 16U);
     write(c2scr, all_channels);
-    write(c2mr, (all_channels & ~channels) | all_channels << 16U);
     write(c2cr, receive_interrupt);
   }
 
-  // The channels Linux has rung and we listen to: for the IPCC_RX1 interrupt.
+  // The channels (a bit per channel) whose doorbells interrupt, or no longer do; the free-channel masks stay as they
+  // are. Read-modify-writes of C2MR: from one context at a time.
+  void unmask_receive(std::uint32_t channels) const { write(c2mr, read(c2mr) & ~(channels & all_channels)); }
+  void mask_receive(std::uint32_t channels) const { write(c2mr, read(c2mr) | (channels & all_channels)); }
+
+  // The channels Linux has rung and that are unmasked: what holds the IPCC_RX1 interrupt pending.
   [[nodiscard]] std::uint32_t pending() const { return read(c1toc2sr) & ~read(c2mr) & all_channels; }
+  // The channels Linux has rung, masked or not.
+  [[nodiscard]] std::uint32_t rung() const { return read(c1toc2sr) & all_channels; }
   // The message of `channel` is taken: Linux may ring it again.
   void acknowledge(unsigned channel) const { write(c2scr, 1U << channel); }
 

@@ -35,6 +35,9 @@ class LinuxLink {
  public:
   static constexpr std::uint32_t xcp_address = rpmsg::first_local_address;
   static constexpr std::uint32_t application_address = rpmsg::first_local_address + 1;
+  // The IPCC channels the link listens to, a bit each.
+  static constexpr std::uint32_t link_channels = 1U << ipcc_channel::vring0 | 1U << ipcc_channel::vring1 |
+                                                 1U << ipcc_channel::shutdown | 1U << ipcc_channel::detach;
 
   // One link per image: the vrings' doorbell reaches it without a context.
   explicit LinuxLink(const LinuxLinkConfiguration& configuration);
@@ -48,7 +51,8 @@ class LinuxLink {
   [[nodiscard]] LinkProblem problem() const { return problem_; }
 
   // IPCC_RX1's handler (and whoever pends it to send): doorbells taken, Linux's messages handed to the channels'
-  // protocols, what they queued sent as far as Linux has buffers.
+  // protocols, what they queued sent as far as Linux has buffers. A doorbell is masked while it waits to be served:
+  // while the link is down, until try_start() starts the next session.
   void serve();
 
   [[nodiscard]] std::uint32_t shutdown_requests() const { return shutdown_requests_; }

@@ -52,6 +52,7 @@ class SpiMaster {
   static constexpr std::uint32_t transmit_dma = 1U << 15U;    // TXDMAEN
   static constexpr std::uint32_t crc_size_reset = 7U << 16U;  // CRCSIZE at its reset value (CRC off)
   static constexpr unsigned baud_rate_shift = 28;             // MBR: the kernel clock / 2^(MBR + 1)
+  static constexpr std::uint32_t slowest_baud_rate = 7;       // MBR for the divider 256
   static constexpr std::uint32_t no_baud_rate = 8;            // baud_rate_setting(): no MBR is slow enough
   // CFG2
   static constexpr std::uint32_t master = 1U << 22U;           // MASTER
@@ -81,18 +82,23 @@ class SpiMaster {
   SpiMaster& operator=(const SpiMaster&) = delete;
 
   // The smallest MBR whose divider 2^(MBR + 1) brings `kernel_clock_hz` down to at most `max_clock_hz`, or
-  // no_baud_rate when even 256 does not.
+  // no_baud_rate when even 256 does not. A kernel clock not known (0 Hz) gets the slowest divider, 256, the safest
+  // guess, never the fastest.
   static constexpr std::uint32_t baud_rate_setting(std::uint32_t kernel_clock_hz, std::uint32_t max_clock_hz) {
+    if (kernel_clock_hz == 0) return slowest_baud_rate;
     for (std::uint32_t setting = 0; setting < no_baud_rate; ++setting) {
       if (kernel_clock_hz <= std::uint64_t{max_clock_hz} << (setting + 1U)) return setting;
     }
     return no_baud_rate;
   }
 
+  // The divider of MBR `setting`.
+  static constexpr std::uint32_t divider(std::uint32_t setting) { return 2U << setting; }
+
   // At start-up, before the DMA interrupts are on: master, 8-bit frames, mode 3, the fastest clock of at most
-  // `max_clock_hz` (the MPU6500 takes 1 MHz for every register) from the SPI's `kernel_clock_hz`, both streams on
-  // the driver's buffers. Stops whatever a previous firmware left running. False, nothing touched, when even the
-  // divider 256 is too fast; false when a stream has not stopped yet (try again).
+  // `max_clock_hz` (the MPU6500 takes 1 MHz for every register) from the SPI's `kernel_clock_hz` (0: not known, the
+  // slowest divider), both streams on the driver's buffers. Stops whatever a previous firmware left running. False,
+  // nothing touched, when even the divider 256 is too fast; false when a stream has not stopped yet (try again).
   [[nodiscard]] bool start(std::uint32_t kernel_clock_hz, std::uint32_t max_clock_hz) {
     const std::uint32_t setting = baud_rate_setting(kernel_clock_hz, max_clock_hz);
     if (setting == no_baud_rate) return false;
