@@ -1,4 +1,5 @@
-// Exceptions nobody handles: say which one on the console, with the fault status, and halt.
+// Exceptions nobody handles (the faults have fault.cpp): say which one on the console, with the fault status, and
+// halt.
 
 #include <cstdint>
 #include <string_view>
@@ -46,11 +47,6 @@ extern "C" void Default_Handler() {
 }
 
 extern "C" {
-void NMI_Handler() __attribute__((weak, alias("Default_Handler")));
-void HardFault_Handler() __attribute__((weak, alias("Default_Handler")));
-void MemManage_Handler() __attribute__((weak, alias("Default_Handler")));
-void BusFault_Handler() __attribute__((weak, alias("Default_Handler")));
-void UsageFault_Handler() __attribute__((weak, alias("Default_Handler")));
 void SVC_Handler() __attribute__((weak, alias("Default_Handler")));
 void DebugMon_Handler() __attribute__((weak, alias("Default_Handler")));
 void PendSV_Handler() __attribute__((weak, alias("Default_Handler")));
