@@ -1,8 +1,10 @@
 // The fault handlers' entry (fault.hpp): off the stack that may have overflowed first, then the board's reaction.
+// An interrupt nobody handles takes the same path: it is as fatal as a fault.
 
 #include "duet/cortex_m/fault.hpp"
 
 #include <cstdint>
+#include <string_view>
 
 #include "duet/cortex_m/board_hooks.hpp"
 #include "duet/cortex_m/interrupts.hpp"
@@ -32,6 +34,25 @@ bool in_guard(std::uintptr_t address) {
 }
 
 }  // namespace
+
+namespace duet::cortex_m {
+
+std::string_view exception_name(std::uint32_t number) {
+  switch (number) {
+    case 2: return "NMI";
+    case 3: return "HardFault";
+    case 4: return "MemManage";
+    case 5: return "BusFault";
+    case 6: return "UsageFault";
+    case 11: return "SVCall";
+    case 12: return "DebugMonitor";
+    case 14: return "PendSV";
+    case 15: return "SysTick";
+    default: return "interrupt";
+  }
+}
+
+}  // namespace duet::cortex_m
 
 // Reached from the entry below on the fault stack, interrupts masked, with the stacked frame's address and EXC_RETURN.
 extern "C" [[noreturn, gnu::used]] void duet_cortex_m_fault(std::uintptr_t frame, std::uint32_t exception_return) {
@@ -64,9 +85,14 @@ extern "C" [[gnu::naked]] void duet_cortex_m_fault_entry() {
 // Weak: a board or an application may replace one. nothrow: an alias promises what its target does, and GCC takes
 // the naked entry for one that cannot throw.
 extern "C" {
+void Default_Handler() __attribute__((alias("duet_cortex_m_fault_entry"), nothrow));
 void NMI_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
 void HardFault_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
 void MemManage_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
 void BusFault_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
 void UsageFault_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
+void SVC_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
+void DebugMon_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
+void PendSV_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
+void SysTick_Handler() __attribute__((weak, alias("duet_cortex_m_fault_entry"), nothrow));
 }

@@ -46,7 +46,9 @@ void on_fault(const Fault& fault) {
   TextBuffer<120> report;
   report.append("fatal: ");
   if (fault.stack_overflow) report.append("stack overflow, ");
-  report.append(exception_name(fault.exception)).append(" (exception ").append(fault.exception).append(')');
+  report.append(exception_name(fault.exception));
+  if (fault.exception >= 16) report.append(' ').append(fault.exception - 16U);  // the interrupt's number
+  report.append(" (exception ").append(fault.exception).append(')');
   report.append(", CFSR ").append_hex(register32(cfsr_address));
   report.append(", HFSR ").append_hex(register32(hfsr_address)).append('\n');
   console_write(report.view());

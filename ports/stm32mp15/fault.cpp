@@ -39,7 +39,9 @@ void on_fault(const Fault& fault) {
   duet::TextBuffer<200> report;
   report.append("fatal: ");
   if (fault.stack_overflow) report.append("stack overflow, ");
-  report.append(exception_name(fault.exception)).append(" (exception ").append(fault.exception);
+  report.append(exception_name(fault.exception));
+  if (fault.exception >= 16) report.append(' ').append(fault.exception - 16U);  // the interrupt's number
+  report.append(" (exception ").append(fault.exception);
   report.append("), CFSR ").append_hex(last_fault.cfsr).append(", HFSR ").append_hex(last_fault.hfsr);
   report.append(", MMFAR ").append_hex(last_fault.mmfar).append(", BFAR ").append_hex(last_fault.bfar);
   report.append(", PC ").append_hex(last_fault.pc).append(", LR ").append_hex(last_fault.lr);
