@@ -8,9 +8,11 @@ set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
 set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
 
 set(DUET_CORTEX_M4F_FLAGS "-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16")
-set(CMAKE_C_FLAGS_INIT "${DUET_CORTEX_M4F_FLAGS} -ffunction-sections -fdata-sections")
+# -fcallgraph-info=su: each object's stack usage and calls beside it (.ci), for the worst-case stack of each image
+# (ports/cortex-m/worst_case_stack.py).
+set(CMAKE_C_FLAGS_INIT "${DUET_CORTEX_M4F_FLAGS} -ffunction-sections -fdata-sections -fcallgraph-info=su")
 set(CMAKE_CXX_FLAGS_INIT
-    "${DUET_CORTEX_M4F_FLAGS} -ffunction-sections -fdata-sections -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
+    "${DUET_CORTEX_M4F_FLAGS} -ffunction-sections -fdata-sections -fcallgraph-info=su -fno-exceptions -fno-rtti -fno-threadsafe-statics -fno-use-cxa-atexit")
 set(CMAKE_EXE_LINKER_FLAGS_INIT "-nostdlib -Wl,--gc-sections -Wl,--print-memory-usage")
 # libgcc last on every link line, after every library a firmware links (its soft-float and 64-bit helpers).
 set(CMAKE_C_STANDARD_LIBRARIES "-lgcc")

@@ -75,6 +75,7 @@ void report_last_fault() {
   line.append("balbot: the last run ended in fault: exception ").append(fault->exception);
   line.append(" pc ").append_hex(fault->pc).append(" lr ").append_hex(fault->lr);
   line.append(" cfsr ").append_hex(fault->cfsr).append(" hfsr ").append_hex(fault->hfsr);
+  if (fault->stack_overflow != 0) line.append(" (stack overflow)");
   line.append(" faults ").append(fault->count).append('\n');
   cortex_m::console_write(line.view());
 }

@@ -127,11 +127,11 @@ class FaultRecordTest : public ::testing::Test {
   static constexpr ExceptionFrame frame{1, 2, 3, 4, 12, 0x1000'0123, 0x1000'0456, 0x2100'0000};
 
   // Power-on contents: anything.
-  FaultRecord record{0x1234'5678, 77, 3, 1, 2, 3, 4, 5, 6, 7};
+  FaultRecord record{0x1234'5678, 77, 3, 1, 2, 3, 4, 5, 6, 7, 8};
 };
 
 TEST_F(FaultRecordTest, TheRecordHoldsTheFrameAndStatus) {
-  record_fault(record, 3, bus_fault, &frame);
+  record_fault(record, 3, bus_fault, &frame, false);
   EXPECT_EQ(record.magic, FaultRecord::unreported);
   EXPECT_EQ(record.count, 1U);  // garbage before: the first fault
   EXPECT_EQ(record.exception, 3U);
@@ -142,10 +142,11 @@ TEST_F(FaultRecordTest, TheRecordHoldsTheFrameAndStatus) {
   EXPECT_EQ(record.pc, 0x1000'0456U);
   EXPECT_EQ(record.lr, 0x1000'0123U);
   EXPECT_EQ(record.xpsr, 0x2100'0000U);
+  EXPECT_EQ(record.stack_overflow, 0U);
 }
 
 TEST_F(FaultRecordTest, TheNextStartTakesItOnce) {
-  record_fault(record, 5, bus_fault, &frame);
+  record_fault(record, 5, bus_fault, &frame, false);
   const std::optional<FaultRecord> fault = take_fault(record);
   ASSERT_TRUE(fault.has_value());
   EXPECT_EQ(fault->exception, 5U);
@@ -156,10 +157,10 @@ TEST_F(FaultRecordTest, TheNextStartTakesItOnce) {
 }
 
 TEST_F(FaultRecordTest, TheCountGoesOnAcrossStarts) {
-  record_fault(record, 3, bus_fault, &frame);
+  record_fault(record, 3, bus_fault, &frame, false);
   ASSERT_TRUE(take_fault(record).has_value());
-  record_fault(record, 6, bus_fault, &frame);
-  record_fault(record, 4, bus_fault, &frame);  // before the next start took the one before: the last one is kept
+  record_fault(record, 6, bus_fault, &frame, false);
+  record_fault(record, 4, bus_fault, &frame, false);  // before the next start took the one before: the last one is kept
   const std::optional<FaultRecord> fault = take_fault(record);
   ASSERT_TRUE(fault.has_value());
   EXPECT_EQ(fault->count, 3U);
@@ -171,18 +172,27 @@ TEST_F(FaultRecordTest, ARecordWithABadMagicIsIgnoredAndStartsTheCount) {
   EXPECT_EQ(record.magic, FaultRecord::reported);
   EXPECT_EQ(record.count, 0U);
   EXPECT_FALSE(take_fault(record).has_value());
-  record_fault(record, 3, bus_fault, &frame);
+  record_fault(record, 3, bus_fault, &frame, false);
   EXPECT_EQ(record.count, 1U);
 }
 
 TEST_F(FaultRecordTest, AFrameWhoseStackingFailedIsNotRead) {
   const FaultStatus stacking_error{1U << 12, 0x4000'0000, 0, 0};  // CFSR.STKERR
-  record_fault(record, 3, stacking_error, nullptr);
+  record_fault(record, 3, stacking_error, nullptr, false);
   EXPECT_EQ(record.magic, FaultRecord::unreported);
   EXPECT_EQ(record.cfsr, 1U << 12);
   EXPECT_EQ(record.pc, 0U);
   EXPECT_EQ(record.lr, 0U);
   EXPECT_EQ(record.xpsr, 0U);
+}
+
+// The main stack ran into its guard: the core could not stack the frame there (CFSR.MSTKERR), and the record says why.
+TEST_F(FaultRecordTest, AStackOverflowIsRecordedWithoutItsFrame) {
+  const FaultStatus stacking_into_the_guard{1U << 4, 0x4000'0000, 0, 0};
+  record_fault(record, 3, stacking_into_the_guard, nullptr, true);
+  EXPECT_EQ(record.magic, FaultRecord::unreported);
+  EXPECT_EQ(record.stack_overflow, 1U);
+  EXPECT_EQ(record.pc, 0U);
 }
 
 }  // namespace

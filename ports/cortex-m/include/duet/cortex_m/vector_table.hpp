@@ -18,8 +18,9 @@ struct VectorTable {
 
 }  // namespace duet::cortex_m
 
-// Handlers the core calls by these names. Each is weak: an application overrides one by defining it; the rest report
-// an unhandled exception through the board's fault hook (see board_hooks.hpp).
+// Handlers the core calls by these names. Each is weak: an application overrides one by defining it. The faults (NMI,
+// HardFault, MemManage, BusFault, UsageFault) and every exception or interrupt nobody handles (Default_Handler) take
+// the fault path (fault.hpp) to the board's on_fault.
 extern "C" {
 [[noreturn]] void Reset_Handler();
 void NMI_Handler();

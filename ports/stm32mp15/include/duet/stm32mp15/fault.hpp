@@ -73,7 +73,7 @@ inline FaultStatus read_fault_status(std::uintptr_t base = FaultStatus::register
 // writes (.noinit, stm32mp15_m4.ld), whose contents after power-on are garbage: `magic` tells a record from that.
 // Change the magic values when the layout changes, so that an image never reads another's record.
 struct FaultRecord {
-  static constexpr std::uint32_t unreported = 0x6661'756C;  // a fault the next start has not taken yet
+  static constexpr std::uint32_t unreported = 0x6661'756D;  // a fault the next start has not taken yet
   static constexpr std::uint32_t reported = ~unreported;    // taken; `count` still counts
 
   std::uint32_t magic;
@@ -81,11 +81,12 @@ struct FaultRecord {
   std::uint32_t exception;  // 2 NMI, 3 HardFault, 4 MemManage, 5 BusFault, 6 UsageFault
   std::uint32_t cfsr, hfsr, mmfar, bfar;
   std::uint32_t pc, lr, xpsr;  // as stacked; 0 when stacking failed
+  std::uint32_t stack_overflow;  // 1: the main stack ran into its guard (ports/cortex-m/fault.hpp)
 };
 
 // Records fault `exception` with its `status` in `record`, reading the stacked `frame` only if stacking succeeded.
 inline void record_fault(FaultRecord& record, std::uint32_t exception, const FaultStatus& status,
-                         const ExceptionFrame* frame) {
+                         const ExceptionFrame* frame, bool stack_overflow) {
   const bool counting = record.magic == FaultRecord::unreported || record.magic == FaultRecord::reported;
   const bool stacked = (status.cfsr & FaultStatus::stacking_errors) == 0;
   const ExceptionFrame registers = stacked ? *frame : ExceptionFrame{};
@@ -98,6 +99,7 @@ inline void record_fault(FaultRecord& record, std::uint32_t exception, const Fau
   record.pc = registers.pc;
   record.lr = registers.lr;
   record.xpsr = registers.xpsr;
+  record.stack_overflow = stack_overflow ? 1U : 0U;
   record.magic = FaultRecord::unreported;
 }
 
