@@ -1,9 +1,13 @@
 // The analyses against the thesis' figures, the textbook example and hand-computed cases.
 #include <gtest/gtest.h>
 
+#include <compare>
+#include <cstdint>
+
 #include "duet/sched/priority_assignment.hpp"
 #include "duet/sched/response_time.hpp"
 #include "duet/sched/utilization.hpp"
+#include "natural.hpp"
 #include "thesis_task_set.hpp"
 
 namespace duet::sched {
@@ -95,6 +99,89 @@ TEST(ResponseTime, AnOverloadedSetIsUnschedulableWithoutEnd) {
   EXPECT_DOUBLE_EQ(analysis.tasks[0].response, 6);
   EXPECT_EQ(analysis.tasks[1].response, unbounded);
   EXPECT_FALSE(analysis.schedulable());
+}
+
+// Issue #23's harmonic set, rate-monotonic: U = 5/20 + 10/40 + 40/80 = 1 exactly.
+TaskSet issue_23_harmonic_set() { return in_order(tasks_of({{5, 20}, {10, 40}, {40, 80}})); }
+
+TEST(ResponseTime, IssueTwentyThreesHarmonicSetAtUtilizationOneIsSchedulable) {
+  // By hand, R = C + B + sum_hp ceil(R / Tj) Cj with B = 0, iterated from R = C:
+  //   t0: R = 5.
+  //   t1: 10 + ceil(10/20) 5 = 15 -> 10 + ceil(15/20) 5 = 15: R = 15.
+  //   t2: 40 + 2*5 + 1*10 = 60 -> 40 + 3*5 + 2*10 = 75 -> 40 + 4*5 + 2*10 = 80 -> 80: R = 80 = D.
+  // t2's busy period ends at 80, the hyperperiod, exactly where every task is released again.
+  const Analysis analysis = analyse(issue_23_harmonic_set()).value();
+  EXPECT_DOUBLE_EQ(analysis.tasks[0].response, 5);
+  EXPECT_DOUBLE_EQ(analysis.tasks[1].response, 15);
+  EXPECT_DOUBLE_EQ(analysis.tasks[2].response, 80);
+  EXPECT_EQ(analysis.tasks[2].jobs, 1U);
+  EXPECT_TRUE(analysis.schedulable());
+}
+
+TEST(ResponseTime, AFourTaskHarmonicSetAtUtilizationOneIsSchedulable) {
+  // (2, 8), (4, 16), (8, 32), (8, 32): U = 1/4 + 1/4 + 1/4 + 1/4 = 1. By hand, R = C + sum_hp ceil(R / Tj) Cj:
+  //   t0: R = 2.
+  //   t1: 4 + ceil(4/8) 2 = 6 -> 4 + ceil(6/8) 2 = 6: R = 6.
+  //   t2: 8 + 1*2 + 1*4 = 14 -> 8 + 2*2 + 1*4 = 16 -> 8 + 2*2 + 1*4 = 16: R = 16.
+  //   t3: 8 + 1*2 + 1*4 + 1*8 = 22 -> 8 + 3*2 + 2*4 + 1*8 = 30 -> 8 + 4*2 + 2*4 + 1*8 = 32 -> 32: R = 32 = D.
+  const Analysis analysis = analyse(in_order(tasks_of({{2, 8}, {4, 16}, {8, 32}, {8, 32}}))).value();
+  EXPECT_DOUBLE_EQ(analysis.tasks[0].response, 2);
+  EXPECT_DOUBLE_EQ(analysis.tasks[1].response, 6);
+  EXPECT_DOUBLE_EQ(analysis.tasks[2].response, 16);
+  EXPECT_DOUBLE_EQ(analysis.tasks[3].response, 32);
+  EXPECT_TRUE(analysis.schedulable());
+}
+
+TEST(ResponseTime, OnePicosecondAboveUtilizationOneIsUnschedulable) {
+  // t2's C one picosecond longer: U = 1 + 1.25e-8. Work then arrives faster than it is done: t2's busy period never
+  // ends. t0 and t1 keep R = 5 and 15.
+  TaskSet set = issue_23_harmonic_set();
+  set.tasks[2].wcet = 40.000001;
+  const Analysis analysis = analyse(set).value();
+  EXPECT_DOUBLE_EQ(analysis.tasks[0].response, 5);
+  EXPECT_DOUBLE_EQ(analysis.tasks[1].response, 15);
+  EXPECT_EQ(analysis.tasks[2].response, unbounded);
+  EXPECT_FALSE(analysis.schedulable());
+}
+
+TEST(ResponseTime, AtUtilizationOneBlockingOrJitterKeepTheBusyPeriodFromEnding) {
+  // At U = 1 the work released in [0, w) is at least w; a picosecond of blocking or of jitter comes on top and is
+  // never caught up. t2's first job alone already misses: 40 + B + 4*5 + 2*10 = 80 + 1 ps crosses 80, which adds
+  // t0's and t1's next jobs.
+  TaskSet blocked = issue_23_harmonic_set();
+  blocked.core.masked_section = 0.000001;
+  const Analysis blocked_analysis = analyse(blocked).value();
+  EXPECT_DOUBLE_EQ(blocked_analysis.tasks[1].response, 15.000001);
+  EXPECT_EQ(blocked_analysis.tasks[2].response, unbounded);
+  TaskSet jittered = issue_23_harmonic_set();
+  jittered.tasks[0].jitter = 0.000001;
+  EXPECT_EQ(analyse(jittered).value().tasks[2].response, unbounded);
+}
+
+TEST(ResponseTime, TimesFinerThanAPicosecondAreAnError) {
+  TaskSet set = issue_23_harmonic_set();
+  set.tasks[1].period = 40.0000001;
+  const auto analysis = analyse(set);
+  ASSERT_FALSE(analysis.ok());
+  EXPECT_EQ(analysis.error(),
+            "task 't1': period_us is finer than a picosecond, the unit the analysis counts in (at most six decimals in "
+            "us)");
+}
+
+TEST(ExactArithmetic, NaturalNumbersCarryAcrossWords) {
+  // (2^64 - 1)^2 + 2 (2^64 - 1) + 1 = 2^128, built word by word the other way.
+  constexpr std::uint64_t largest = ~std::uint64_t{0};
+  Natural square{largest};
+  square *= largest;
+  Natural power{1};
+  for (int word = 0; word < 4; ++word) power *= std::uint64_t{1} << 32;
+  square += Natural{largest};
+  square += Natural{largest};
+  EXPECT_TRUE(square < power);
+  square += Natural{1};
+  EXPECT_TRUE(square <=> power == std::strong_ordering::equal);
+  square += Natural{1};
+  EXPECT_TRUE(square > power);
 }
 
 TEST(ResponseTime, AMissedDeadlineIsReportedWithItsResponse) {

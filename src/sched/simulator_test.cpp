@@ -21,6 +21,17 @@ TEST(Simulator, TheCriticalInstantReachesTheTextbookResponses) {
   EXPECT_DOUBLE_EQ(largest[2], 20);
 }
 
+TEST(Simulator, TheCriticalInstantReachesTheResponsesAtUtilizationOne) {
+  // Issue #23's harmonic set (U = 1): the lowest task finishes exactly at its deadline, two hyperperiods running.
+  const TaskSet set = in_order(tasks_of({{5, 20}, {10, 40}, {40, 80}}));
+  const Analysis analysis = analyse(set).value();
+  const std::vector<double> largest = largest_responses(set, simulate(set, critical_instant(set, 160)));
+  for (std::size_t task = 0; task < set.tasks.size(); ++task) {
+    EXPECT_DOUBLE_EQ(largest[task], analysis.tasks[task].response) << set.tasks[task].name;
+  }
+  EXPECT_DOUBLE_EQ(largest[2], 80);
+}
+
 TEST(Simulator, ALaterJobOfTheBusyPeriodIsTheWorst) {
   TaskSet set = in_order(tasks_of({{26, 70}, {62, 100}}));
   set.tasks[1].deadline = 120;

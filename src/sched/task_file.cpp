@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "duet/sched/picoseconds.hpp"
 #include "duet/support/text_file.hpp"
 
 namespace duet::sched {
@@ -37,8 +38,8 @@ class Reader {
     return std::nullopt;
   }
 
-  // A number field; `required` or defaulting to `fallback`; never negative, never infinite.
-  [[nodiscard]] Result<double> number(const YAML::Node& parent, const std::string& where, const char* field,
+  // A time field; `required` or defaulting to `fallback`; never negative, a whole number of picoseconds.
+  [[nodiscard]] Result<double> time_field(const YAML::Node& parent, const std::string& where, const char* field,
                                       std::optional<double> fallback) const {
     const YAML::Node node = parent[field];
     if (!node) {
@@ -50,8 +51,9 @@ class Reader {
       return at(node, where + ": " + field + ": expected a number, got '" +
                           (node.IsScalar() ? node.Scalar() : "a list or map") + "'");
     }
-    if (value < 0)
-      return at(node, where + ": " + field + ": " + node.Scalar() + " is negative; times are never negative");
+    if (const auto exact = whole_picoseconds(value); !exact) {
+      return at(node, where + ": " + field + ": " + node.Scalar() + " " + exact.error());
+    }
     return value;
   }
 
@@ -92,7 +94,7 @@ Result<Core> read_core(const Reader& reader, const YAML::Node& node) {
   for (const auto& [field, target] : {std::pair{"entry_overhead_us", &core.entry_overhead},
                                       {"exit_overhead_us", &core.exit_overhead},
                                       {"masked_section_us", &core.masked_section}}) {
-    auto value = reader.number(node, "core", field, 0.0);
+    auto value = reader.time_field(node, "core", field, 0.0);
     if (!value) return Failure{value.error()};
     *target = value.value();
   }
@@ -136,13 +138,13 @@ Result<Task> read_task(const Reader& reader, const YAML::Node& node, std::size_t
           node, where, {"name", "wcet_us", "period_us", "deadline_us", "jitter_us", "source", "irq", "priority"})) {
     return *unknown;
   }
-  auto wcet = reader.number(node, where, "wcet_us", std::nullopt);
+  auto wcet = reader.time_field(node, where, "wcet_us", std::nullopt);
   if (!wcet) return Failure{wcet.error()};
-  auto period = reader.number(node, where, "period_us", std::nullopt);
+  auto period = reader.time_field(node, where, "period_us", std::nullopt);
   if (!period) return Failure{period.error()};
-  auto deadline = reader.number(node, where, "deadline_us", period.value());
+  auto deadline = reader.time_field(node, where, "deadline_us", period.value());
   if (!deadline) return Failure{deadline.error()};
-  auto jitter = reader.number(node, where, "jitter_us", 0.0);
+  auto jitter = reader.time_field(node, where, "jitter_us", 0.0);
   if (!jitter) return Failure{jitter.error()};
   task.wcet = wcet.value();
   task.period = period.value();

@@ -81,6 +81,12 @@ TEST(TaskFile, ImpossibleValuesAreRejectedWithAReason) {
       error_of("core: {sub_priority_bits: 2}\ntasks:\n  - {name: a, wcet_us: 1, period_us: 2, priority: {group: 1, "
                "sub: 4}}\n"),
       "tasks.yaml:3: task 'a': priority: sub: 4 is outside 0..3");
+  EXPECT_EQ(error_of("tasks:\n  - {name: a, wcet_us: 0.1234567, period_us: 2}\n"),
+            "tasks.yaml:2: task 'a': wcet_us: 0.1234567 is finer than a picosecond, the unit the analysis counts in "
+            "(at most six decimals in us)");
+  EXPECT_EQ(error_of("tasks:\n  - {name: a, wcet_us: 1, period_us: 1e20}\n"),
+            "tasks.yaml:2: task 'a': period_us: 1e20 is longer than 2^61 ps (about 26.7 days), the longest time the "
+            "analysis counts");
   // C > T is possible with D > T (arbitrary deadlines): accepted, the analysis decides.
   EXPECT_EQ(error_of("tasks:\n  - {name: a, wcet_us: 5, period_us: 4, deadline_us: 9}\n"), "(no error)");
 }

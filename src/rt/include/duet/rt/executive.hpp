@@ -18,6 +18,7 @@
 #include "duet/rt/nested_timing.hpp"
 #include "duet/rt/task_statistics.hpp"
 #include "duet/rt/task_table.hpp"
+#include "duet/rt/tick_count.hpp"
 
 namespace duet::rt {
 
@@ -106,7 +107,7 @@ class Executive {
   void on_base_tick() {
     if (state_.load(std::memory_order_relaxed) != ExecutiveState::running) return;
     const std::uint32_t now = port_.cycles();
-    if (ticks_ != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
+    if (ticks_.read() != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
     previous_tick_cycles_ = now;
 
     run_measured(0);
@@ -123,7 +124,7 @@ class Executive {
     advance_tick();
 
     if (port_.base_tick_pending()) overrun(0);
-    if (model_.final_tick != 0 && ticks_ >= model_.final_tick) request_stop(StopReason::final_tick);
+    if (model_.final_tick != 0 && ticks_.read() >= model_.final_tick) request_stop(StopReason::final_tick);
   }
 
   // Multitasking: the software interrupt of a slower rate.
@@ -140,8 +141,9 @@ class Executive {
   // True while the base tick `ticks()` releases `rate`: what deterministic rate transitions ask in the faster task.
   [[nodiscard]] bool is_release_tick(std::size_t rate) const { return ticks_until_release_[rate] == 0; }
 
-  // Base ticks so far; during a base-rate step, the index of the current tick.
-  [[nodiscard]] std::uint64_t ticks() const { return ticks_; }
+  // Base ticks so far; during a base-rate step, the index of the current tick. Whole, never torn, from the base tick
+  // and any less urgent context (tick_count.hpp).
+  [[nodiscard]] std::uint64_t ticks() const { return ticks_.read(); }
   [[nodiscard]] ExecutiveState state() const { return state_; }
   [[nodiscard]] StopReason stop_reason() const { return stop_reason_; }
   [[nodiscard]] const TaskStatistics& statistics(std::size_t task) const { return statistics_[task]; }
@@ -176,7 +178,7 @@ class Executive {
 
   // Counts down to each rate's next release rather than dividing the 64-bit tick count on every tick.
   void advance_tick() {
-    ++ticks_;
+    ticks_.increment();
     for (std::size_t rate = 1; rate < rates_; ++rate) {
       std::uint32_t& countdown = ticks_until_release_[rate];
       countdown = countdown == 0 ? model_.tasks[rate].period_ticks - 1U : countdown - 1U;
@@ -188,7 +190,7 @@ class Executive {
   std::size_t rates_ = 0;
   std::atomic<ExecutiveState> state_{ExecutiveState::created};
   StopReason stop_reason_ = StopReason::none;
-  std::uint64_t ticks_ = 0;
+  TickCount<> ticks_;
   std::uint32_t previous_tick_cycles_ = 0;
   std::array<std::uint32_t, TaskCapacity> ticks_until_release_{};  // 0: the current tick releases the rate
   std::array<std::atomic<bool>, TaskCapacity> rate_released_{};
