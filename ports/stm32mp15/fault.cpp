@@ -33,8 +33,8 @@ namespace duet::cortex_m {
 void on_fault(const Fault& fault) {
   duet::stm32mp15::enter_safe_state();
   const duet::stm32mp15::FaultStatus status = duet::stm32mp15::read_fault_status();
-  duet::stm32mp15::record_fault(last_fault, fault.exception, status, reinterpret_cast<const ExceptionFrame*>(fault.frame),
-                                fault.stack_overflow);
+  duet::stm32mp15::record_fault(last_fault, fault.exception, status,
+                                reinterpret_cast<const ExceptionFrame*>(fault.frame), fault.stack_overflow);
 
   duet::TextBuffer<200> report;
   report.append("fatal: ");

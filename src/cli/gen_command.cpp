@@ -23,6 +23,9 @@ struct GenOptions {
 ExitCode run_gen(const GenOptions& options, Streams streams) {
   const auto checked = load_checked_model(options.file, streams.err);
   if (!checked) return ExitCode::failure;
+  for (const model::Diagnostic& warning : model::precision_warnings(checked->program)) {
+    streams.err << model::format(options.file, warning) << '\n';
+  }
   std::error_code error;
   std::filesystem::create_directories(options.output, error);
   if (error) {

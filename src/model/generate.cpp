@@ -648,4 +648,41 @@ bool is_executive_account(const xcp::host::A2lDescription& a2l, const xcp::host:
   });
 }
 
+// Double precision where the model does not ask for it (`precision: double`): the Cortex-M4's FPU computes in single
+// precision only, so every double operation in its firmware is a libgcc routine of some hundred instructions. Each
+// place double starts is named once: a parameter, and a block whose output is double though none of its inputs is
+// (a source, a Convert); what computes from those follows them.
+std::vector<Diagnostic> precision_warnings(const Program& program) {
+  std::vector<Diagnostic> diagnostics;
+  if (program.model->double_precision) return diagnostics;
+  constexpr const char* hint = "give it 'type: single', or say 'precision: double' at the top of the model";
+  for (const Parameter& parameter : program.model->parameters) {
+    if (parameter.type != DataType::float64) continue;
+    diagnostics.push_back({Diagnostic::Severity::warning, parameter.location,
+                           "parameter '" + parameter.name +
+                               "' is double precision, which the Cortex-M4 computes in "
+                               "software",
+                           hint});
+  }
+  for (const ProgramBlock& block : program.blocks) {
+    const auto is_double = [&program](std::size_t signal) {
+      return program.signals[signal].type.type == DataType::float64;
+    };
+    if (block.type() == "PlantInput" || block.type() == "PlantOutput") continue;  // simulation only
+    // A Constant that names a parameter is the parameter, named above; a block fed by a double follows it.
+    const auto named_parameter = [&program](std::size_t signal) {
+      return program.signals[signal].parameter.has_value();
+    };
+    if (std::none_of(block.outputs.begin(), block.outputs.end(), is_double)) continue;
+    if (std::all_of(block.outputs.begin(), block.outputs.end(), named_parameter)) continue;
+    if (std::any_of(block.inputs.begin(), block.inputs.end(), is_double)) continue;
+    diagnostics.push_back({Diagnostic::Severity::warning, block.block->location,
+                           "block '" + block.path +
+                               "' computes in double precision, which the Cortex-M4 does in "
+                               "software",
+                           "give its type as single, or say 'precision: double' at the top of the model"});
+  }
+  return diagnostics;
+}
+
 }  // namespace duet::model

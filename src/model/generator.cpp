@@ -64,7 +64,8 @@ std::string hardware_resource_value(const ProgramBlock& block) {
   if (type == "PwmOut") return "duet::hardware::pwm(" + quoted("timer") + ", " + text("channel") + ")";
   if (type == "InputCapture") return "duet::hardware::capture(" + quoted("timer") + ", " + text("channel") + ")";
   if (type == "SpiDma" || type == "SpiReceive") return "duet::hardware::spi(" + quoted("spi") + ")";
-  if (type == "AdcStart" || type == "AdcDma") return "duet::hardware::adc(" + quoted("adc") + ", " + text("channel") + ")";
+  if (type == "AdcStart" || type == "AdcDma")
+    return "duet::hardware::adc(" + quoted("adc") + ", " + text("channel") + ")";
   if (type == "Exti") return "duet::hardware::exti(" + quoted("line") + ")";
   if (type == "IpcSend" || type == "IpcReceive") return "duet::hardware::ipc(" + quoted("channel") + ")";
   return {};
@@ -772,15 +773,16 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
     return "  duet::hardware::pwm_write" + resource + "(" + converted(block.inputs[0], DataType::float32) + ");\n";
   }
   if (type == "InputCapture") {
-    std::string text = "  {\n    const duet::hardware::CaptureReading reading = duet::hardware::capture_read" +
-                       resource + "();\n";
+    std::string text =
+        "  {\n    const duet::hardware::CaptureReading reading = duet::hardware::capture_read" + resource + "();\n";
     for (std::size_t k = 0; k < block.outputs.size(); ++k) {
       text += "    " + element(block.outputs[k], "0") + " = reading." +
               (block.output_ports[k] == "edge" ? "rising" : "count") + ";\n";
     }
     return text + "  }\n";
   }
-  if (type == "Exti") return "  " + element(block.outputs[0], "0") + " = duet::hardware::exti_level" + resource + "();\n";
+  if (type == "Exti")
+    return "  " + element(block.outputs[0], "0") + " = duet::hardware::exti_level" + resource + "();\n";
   const bool sends = type == "SpiDma" || type == "IpcSend";
   std::string text = "  {\n";
   if (sends && !block.inputs.empty()) {
@@ -790,8 +792,8 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
         bytes += (bytes.empty() ? "" : ", ") + converted(signal, i, DataType::uint8);
       }
     }
-    text += "    const std::uint8_t written[] = {" + bytes + "};\n    duet::hardware::" +
-            (type == "SpiDma" ? "spi_transfer" : "ipc_send") + resource + "(written);\n";
+    text += "    const std::uint8_t written[] = {" + bytes +
+            "};\n    duet::hardware::" + (type == "SpiDma" ? "spi_transfer" : "ipc_send") + resource + "(written);\n";
   }
   if (!block.outputs.empty()) {
     const std::size_t signal = block.outputs[0];  // bytes (SpiDma, SpiReceive, IpcReceive) or samples (AdcDma)

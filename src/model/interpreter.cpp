@@ -737,7 +737,8 @@ Compiled hardware(Compiler& c, const ProgramBlock& block) {
     inputs.push_back(with_type(c.type_in(block, k), [&](auto tag) -> std::function<double(std::size_t)> {
       using T = decltype(tag);
       const Operand<T> u = c.input<T>(block, k);
-      if (block.type() == "PwmOut") return [u](std::size_t i) { return static_cast<double>(blocks::convert<float>(u[i])); };
+      if (block.type() == "PwmOut")
+        return [u](std::size_t i) { return static_cast<double>(blocks::convert<float>(u[i])); };
       if (block.type() == "SpiDma" || block.type() == "IpcSend") {
         return [u](std::size_t i) { return static_cast<double>(blocks::convert<std::uint8_t>(u[i])); };
       }

@@ -421,10 +421,17 @@ Model model(const YAML::Node& root, const std::string& file) {
   }
   result.version = version;
   only(root, "the model",
-       {"duet_model", "name", "description", "base_period_us", "constants", "parameters", "signals", "blocks", "xcp"});
+       {"duet_model", "name", "description", "base_period_us", "precision", "constants", "parameters", "signals",
+        "blocks", "xcp"});
   if (!root["name"]) fail(root, "'name' is missing");
   result.name = identifier(root["name"], "the model name");
   if (root["description"]) result.description = root["description"].Scalar();
+  if (const YAML::Node precision = root["precision"]) {
+    if (!precision.IsScalar() || (precision.Scalar() != "single" && precision.Scalar() != "double")) {
+      fail(precision, "'precision' is single or double", "double: the model computes in double on purpose");
+    }
+    result.double_precision = precision.Scalar() == "double";
+  }
   if (!root["base_period_us"]) fail(root, "'base_period_us' is missing", "the executive's tick, e.g. 100");
   result.base_period_location = location_of(root["base_period_us"]);
   result.base_period_us = number(root["base_period_us"], "base_period_us");

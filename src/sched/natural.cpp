@@ -52,8 +52,7 @@ void Natural::drop_leading_zeros() {
 
 std::strong_ordering operator<=>(const Natural& a, const Natural& b) {
   if (a.words_.size() != b.words_.size()) return a.words_.size() <=> b.words_.size();
-  return std::lexicographical_compare_three_way(a.words_.rbegin(), a.words_.rend(), b.words_.rbegin(),
-                                                b.words_.rend());
+  return std::lexicographical_compare_three_way(a.words_.rbegin(), a.words_.rend(), b.words_.rbegin(), b.words_.rend());
 }
 
 }  // namespace duet::sched

@@ -83,7 +83,8 @@ std::optional<Picoseconds> least_fixed_point(Picoseconds start, Next&& next) {
 }
 
 // The utilization of `level` against 1, exactly: sum_j C_j / T_j as one fraction over the product of the periods.
-std::strong_ordering utilization_against_one(const std::vector<ExactTask>& exact, const std::vector<std::size_t>& level) {
+std::strong_ordering utilization_against_one(const std::vector<ExactTask>& exact,
+                                             const std::vector<std::size_t>& level) {
   Natural numerator{0};
   Natural denominator{1};
   for (std::size_t j : level) {
@@ -141,9 +142,8 @@ TaskResponse analyse_task(const TaskSet& set, std::size_t i, const std::vector<E
     if (!start) return result;
     // Once started, only a more urgent group preempts it: their jobs released after the start.
     const auto finish = least_fixed_point(*start + task.cost, [&](Picoseconds f) {
-      return plus_jobs(*start + task.cost, exact, roles.preempting, [&](const ExactTask& t) {
-        return released_before(f, t) - released_up_to(*start, t);
-      });
+      return plus_jobs(*start + task.cost, exact, roles.preempting,
+                       [&](const ExactTask& t) { return released_before(f, t) - released_up_to(*start, t); });
     });
     if (!finish) return result;
     const Picoseconds response = *finish - static_cast<Picoseconds>(q) * task.period + task.jitter;

@@ -40,7 +40,7 @@ class Reader {
 
   // A time field; `required` or defaulting to `fallback`; never negative, a whole number of picoseconds.
   [[nodiscard]] Result<double> time_field(const YAML::Node& parent, const std::string& where, const char* field,
-                                      std::optional<double> fallback) const {
+                                          std::optional<double> fallback) const {
     const YAML::Node node = parent[field];
     if (!node) {
       if (fallback) return *fallback;

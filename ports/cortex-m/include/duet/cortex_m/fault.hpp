@@ -1,7 +1,8 @@
 #pragma once
 // The fault path every Cortex-M board shares (fault.cpp): NMI, HardFault, MemManage, BusFault, UsageFault and any
-// exception or interrupt nobody handles (Default_Handler) mask interrupts, leave the stack that was in use, which may be the one that just overflowed, for a fault stack of their
-// own (cortex_m_sections.ld), turn the MPU off and hand the board what happened (board_hooks.hpp, on_fault).
+// exception or interrupt nobody handles (Default_Handler) mask interrupts, leave the stack that was in use, which may
+// be the one that just overflowed, for a fault stack of their own (cortex_m_sections.ld), turn the MPU off and hand the
+// board what happened (board_hooks.hpp, on_fault).
 
 #include <cstdint>
 
@@ -18,7 +19,7 @@ struct Fault {
 
 // The fault status registers (ARMv7-M B3.2.15-B3.2.18): which fault and why, and the faulting address when CFSR says
 // it is valid.
-inline constexpr std::uintptr_t cfsr_address = 0xE000'ED28, hfsr_address = 0xE000'ED2C,
-                                mmfar_address = 0xE000'ED34, bfar_address = 0xE000'ED38;
+inline constexpr std::uintptr_t cfsr_address = 0xE000'ED28, hfsr_address = 0xE000'ED2C, mmfar_address = 0xE000'ED34,
+                                bfar_address = 0xE000'ED38;
 
 }  // namespace duet::cortex_m

@@ -14,9 +14,9 @@
 // count leaves them out: the firmware sees its plant as it would see registers, the instructions that encode and
 // decode frames are not counted in the execution times the executive measures. The timers run on (the link's own
 // instructions are a few hundred a tick): pausing and restarting them at every exchange, as the link did before, was
-// two timers for QEMU to reschedule each time, a good part of a paced tick's wall time (docs/LINK.md, "Pacing"). A blocking semihosting call takes no emulated time under
-// -icount, so how fast the plant answers (at once: lock-step; at the wall clock's pace: real time) is the plant's
-// business; the firmware's run is the same either way.
+// two timers for QEMU to reschedule each time, a good part of a paced tick's wall time (docs/LINK.md, "Pacing"). A
+// blocking semihosting call takes no emulated time under -icount, so how fast the plant answers (at once: lock-step; at
+// the wall clock's pace: real time) is the plant's business; the firmware's run is the same either way.
 //
 // Freestanding. A failure (garbage, an ERROR from the plant, the pipe closed) is kept: from then on the calls do
 // nothing, reads give zeros, and error() says what happened.

@@ -80,7 +80,7 @@ struct FaultRecord {
   std::uint32_t count;      // faults since power-on, or since the record was last garbage
   std::uint32_t exception;  // 2 NMI, 3 HardFault, 4 MemManage, 5 BusFault, 6 UsageFault
   std::uint32_t cfsr, hfsr, mmfar, bfar;
-  std::uint32_t pc, lr, xpsr;  // as stacked; 0 when stacking failed
+  std::uint32_t pc, lr, xpsr;    // as stacked; 0 when stacking failed
   std::uint32_t stack_overflow;  // 1: the main stack ran into its guard (ports/cortex-m/fault.hpp)
 };
 

@@ -44,6 +44,11 @@ inline constexpr std::string_view executive_segment = "executive";
 // model's subsystem may be called "executive" too.
 [[nodiscard]] bool is_executive_account(const xcp::host::A2lDescription& a2l, const xcp::host::Variable& measurement);
 
+// Where the program computes in double precision though its model does not say `precision: double`: a warning for
+// each parameter in double and each block where double starts, since the Cortex-M4's FPU is single precision and
+// `duet gen` writes code for it (program.cpp).
+[[nodiscard]] std::vector<Diagnostic> precision_warnings(const Program& program);
+
 // `source` names the model file in the files' first lines; `model_folder` is the model's folder relative to where the
 // files go, for the CMake fragment to find the Code blocks' headers.
 [[nodiscard]] Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,

@@ -142,6 +142,9 @@ struct Model {
   std::string description;
   double base_period_us = 0;
   Location base_period_location;
+  // `precision: double`: the model computes in double precision on purpose; otherwise each place double precision
+  // starts is a warning, since the Cortex-M4's FPU is single precision.
+  bool double_precision = false;
   std::vector<Constant> constants;
   std::vector<Parameter> parameters;
   std::vector<SignalDeclaration> signals;

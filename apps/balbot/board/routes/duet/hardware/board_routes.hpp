@@ -1,6 +1,7 @@
 #pragma once
 // The resources the robot's model uses, routed to the STM32MP15's peripherals (robot_peripherals.cpp defines each,
-// firmware/linux_message_route.cpp the message to Linux; the port's duet/hardware/hardware.hpp includes this). A resource the model names that is not here does not compile.
+// firmware/linux_message_route.cpp the message to Linux; the port's duet/hardware/hardware.hpp includes this). A
+// resource the model names that is not here does not compile.
 
 #include <cstdint>
 #include <span>
