@@ -89,6 +89,20 @@ TEST_F(SimGen, GenWritesEveryFileAndKeepsUnchangedOnes) {
   EXPECT_EQ(std::filesystem::last_write_time(in_folder("out/step_time.cpp")), written);
 }
 
+// Double precision the model did not ask for is a warning, at its place; the code is generated all the same.
+TEST_F(SimGen, GenWarnsWhereDoublePrecisionStarts) {
+  write("wide.yaml",
+        "duet_model: 1\nname: wide\nbase_period_us: 100\nblocks:\n"
+        "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+        "  - {name: g, type: Gain, parameters: {k: 2}, inputs: {u: x}, outputs: {y: y}}\n");
+  const Outcome outcome = run({"gen", in_folder("wide.yaml"), "-o", in_folder("out")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.err, in_folder("wide.yaml") +
+                             ":5:5: warning: block 'c' computes in double precision, which the Cortex-M4 does in "
+                             "software (give its type as single, or say 'precision: double' at the top of the model)\n");
+  EXPECT_TRUE(std::filesystem::exists(in_folder("out") + "/wide.cpp"));
+}
+
 TEST_F(SimGen, GenRefusesAModelWithErrorsAndAFolderItCannotMake) {
   write("bad.yaml",
         "duet_model: 1\nname: bad\nbase_period_us: 100\nblocks:\n  - {name: g, type: Gain, inputs: {u: x}}\n");
@@ -98,7 +112,7 @@ TEST_F(SimGen, GenRefusesAModelWithErrorsAndAFolderItCannotMake) {
   EXPECT_FALSE(std::filesystem::exists(in_folder("out")));
   write("reserved.yaml",
         "duet_model: 1\nname: reserved\nbase_period_us: 100\nblocks:\n"
-        "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: i}}\n"
+        "  - {name: c, type: Constant, parameters: {value: 1, type: single}, outputs: {y: i}}\n"
         "  - {name: g, type: Gain, parameters: {k: 2}, inputs: {u: i}, outputs: {y: x}}\n");
   outcome = run({"gen", in_folder("reserved.yaml"), "-o", in_folder("out")});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);

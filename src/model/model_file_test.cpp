@@ -94,7 +94,7 @@ const Malformed corpus[] = {
     {"future_version", "duet_model: 2\n", "m.yaml:1:13: error: this is duet model format 2; duet reads version 1"},
     {"unknown_field", "duet_model: 1\nnmae: a\n",
      "m.yaml:2:1: error: unknown field 'nmae' in the model (known: "
-     "duet_model, name, description, base_period_us, constants, "
+     "duet_model, name, description, base_period_us, precision, constants, "
      "parameters, signals, blocks, xcp)"},
     {"bad_name", "duet_model: 1\nname: 3dof\n",
      "m.yaml:2:7: error: the model name '3dof' is not a name (letters, "
