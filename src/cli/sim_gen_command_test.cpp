@@ -97,9 +97,10 @@ TEST_F(SimGen, GenWarnsWhereDoublePrecisionStarts) {
         "  - {name: g, type: Gain, parameters: {k: 2}, inputs: {u: x}, outputs: {y: y}}\n");
   const Outcome outcome = run({"gen", in_folder("wide.yaml"), "-o", in_folder("out")});
   EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
-  EXPECT_EQ(outcome.err, in_folder("wide.yaml") +
-                             ":5:5: warning: block 'c' computes in double precision, which the Cortex-M4 does in "
-                             "software (give its type as single, or say 'precision: double' at the top of the model)\n");
+  EXPECT_EQ(outcome.err,
+            in_folder("wide.yaml") +
+                ":5:5: warning: block 'c' computes in double precision, which the Cortex-M4 does in "
+                "software (give its type as single, or say 'precision: double' at the top of the model)\n");
   EXPECT_TRUE(std::filesystem::exists(in_folder("out") + "/wide.cpp"));
 }
 
