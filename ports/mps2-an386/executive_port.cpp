@@ -19,7 +19,20 @@ struct BaseTime {
 };
 BaseTime base_time;
 
+// The time's update in the base tick.
+void advance_base_time() {
+  base_time.microseconds += base_time.period_microseconds;
+  base_time.nanoseconds += base_time.period_nanoseconds;
+  if (base_time.nanoseconds >= 1000U) {
+    base_time.nanoseconds -= 1000U;
+    ++base_time.microseconds;
+  }
+}
+
 }  // namespace
+
+rt::Ceiling ExecutivePort::tasks_ceiling;
+bool ExecutivePort::base_tick_at_ceiling = false;
 
 bool ExecutivePort::configure(const rt::ModelDescription& model) {
   constexpr auto rate_lines = [] {
@@ -29,6 +42,8 @@ bool ExecutivePort::configure(const rt::ModelDescription& model) {
   }();
   if (rt::rate_count(model) > max_rates) return false;
   cycle_counter.start_free_running();
+  tasks_ceiling = rt::tasks_ceiling(model);
+  base_tick_at_ceiling = rt::group_priority(model, 0) == tasks_ceiling.priority;
   return cortex_m::configure_task_interrupts(model, {timer0_interrupt, rate_lines});
 }
 
@@ -36,7 +51,7 @@ void ExecutivePort::start_base_timer(std::uint32_t period_ns) {
   const auto cycles =
       static_cast<std::uint32_t>(static_cast<std::uint64_t>(period_ns) * peripheral_clock_hz / nanoseconds_per_second);
   {
-    const CriticalSection masked;
+    const CriticalSection masked{tasks_ceiling};
     base_time.period_cycles = cycles;
     base_time.period_microseconds = period_ns / 1000U;
     base_time.period_nanoseconds = period_ns % 1000U;
@@ -57,12 +72,11 @@ void ExecutivePort::skip_base_tick() {
 }
 
 void ExecutivePort::count_base_tick() {
-  const CriticalSection masked;  // a task of higher priority may read the time in the middle
-  base_time.microseconds += base_time.period_microseconds;
-  base_time.nanoseconds += base_time.period_nanoseconds;
-  if (base_time.nanoseconds >= 1000U) {
-    base_time.nanoseconds -= 1000U;
-    ++base_time.microseconds;
+  if (base_tick_at_ceiling) {
+    advance_base_time();
+  } else {
+    const CriticalSection masked{tasks_ceiling};  // a more urgent task may read the time in the middle
+    advance_base_time();
   }
 }
 
@@ -70,8 +84,8 @@ std::uint32_t ExecutivePort::executive_microseconds() {
   static_assert(peripheral_clock_hz % 1'000'000U == 0, "a whole number of cycles per microsecond");
   constexpr std::uint32_t cycles_per_microsecond = peripheral_clock_hz / 1'000'000U;
   constexpr std::uint32_t nanoseconds_per_cycle = 1000U / cycles_per_microsecond;
-  const CriticalSection masked;                // the tick count must not move between the reads
-  if (base_time.period_cycles == 0) return 0;  // the executive has not started
+  const CriticalSection masked{tasks_ceiling};  // the tick count must not move between the reads
+  if (base_time.period_cycles == 0) return 0;   // the executive has not started
   // The timer counts down from period - 1 and reloads as it interrupts. A reload between the two reads of the count
   // shows as a rise; then the tick is pending, not yet counted. Otherwise a pending tick came before the first read.
   const std::uint32_t first = base_timer.value();

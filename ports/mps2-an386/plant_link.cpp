@@ -41,9 +41,9 @@ class PlantLink::LinkSection {
   std::uint32_t started_;
 };
 
-// Masked: the link may count cycles between the two reads, from a handler that preempts the caller.
+// Masked: the link may count cycles between the two reads, from a handler of any priority that preempts the caller.
 std::uint32_t PlantLinkedPort::cycles() {
-  const CriticalSection masked;
+  const cortex_m::InterruptMask masked;
   return ExecutivePort::cycles() - PlantLink::cycles_spent();
 }
 

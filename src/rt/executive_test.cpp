@@ -10,9 +10,14 @@
 namespace duet::rt {
 namespace {
 
+// The ceiling of every critical section taken, in order.
+std::vector<unsigned> sections_taken;
+
 // A port whose clock, pending base tick and idle loop the test controls, and which records what the executive did.
 struct FakePort {
-  struct CriticalSection {};
+  struct CriticalSection {
+    explicit CriticalSection(Ceiling ceiling) { sections_taken.push_back(ceiling.priority); }
+  };
 
   [[nodiscard]] std::uint32_t cycles() const { return now; }
   void start_base_timer(std::uint32_t period_ns) { timer_period_ns = period_ns; }
@@ -82,7 +87,10 @@ static_assert(rate_count(model_with(TaskingMode::single)) == 3);
 
 class ExecutiveTest : public ::testing::Test {
  protected:
-  void SetUp() override { model_state = {.port = &port}; }
+  void SetUp() override {
+    model_state = {.port = &port};
+    sections_taken.clear();
+  }
 
   FakePort port;
 };
@@ -318,6 +326,37 @@ TEST(TaskTable, TheExecutiveRefusesMoreTasksThanItWasSizedFor) {
   EXPECT_EQ(executive.initialize(), TaskTableError::too_many_tasks);
   EXPECT_EQ(model_state.initialized, 0);
   EXPECT_FALSE(executive.begin());
+}
+
+// The tasks' groups are 1, 2, 3 and 1: what they all share has ceiling 1, what "every 2" and "every 5" share 2.
+constexpr std::size_t slow_rates[] = {1, 2};
+static_assert(tasks_ceiling(model_with(TaskingMode::single)) == Ceiling{1});
+static_assert(ceiling(model_with(TaskingMode::single), slow_rates) == Ceiling{2});
+
+TEST_F(ExecutiveTest, OnlyTasksBelowTheCeilingOfTheExecutivesDataTakeASectionAtThatCeiling) {
+  const ModelDescription model = model_with(TaskingMode::multi);
+  Executive<FakePort, 4> executive{model, port};
+  ASSERT_EQ(executive.initialize(), TaskTableError::none);
+  ASSERT_TRUE(executive.begin());
+  EXPECT_EQ(executive.tasks_ceiling(), Ceiling{1});
+  executive.on_base_tick();
+  executive.on_interrupt_task(3);
+  EXPECT_TRUE(sections_taken.empty()) << "the base rate and the interrupt task are at the ceiling";
+  executive.on_rate_interrupt(1);
+  EXPECT_EQ(sections_taken, (std::vector<unsigned>{1, 1})) << "one to begin the timing, one to end it";
+}
+
+TEST_F(ExecutiveTest, MeasuresTheLongestSectionAtEachCeiling) {
+  const ModelDescription model = model_with(TaskingMode::multi);
+  Executive<FakePort, 4> executive{model, port};
+  ASSERT_EQ(executive.initialize(), TaskTableError::none);
+  for (const std::uint32_t length : {7U, 12U, 3U}) {
+    const auto section = executive.section(Ceiling{2});
+    port.now += length;
+  }
+  EXPECT_EQ(sections_taken, (std::vector<unsigned>{2, 2, 2}));
+  EXPECT_EQ(executive.longest_section(Ceiling{2}), 12U);
+  EXPECT_EQ(executive.longest_section(Ceiling{1}), 0U);
 }
 
 }  // namespace

@@ -80,6 +80,20 @@ TEST(ResponseTime, MaskedSectionsAndOverheadsCount) {
   EXPECT_DOUBLE_EQ(analysis.tasks[1].response, 9);
 }
 
+TEST(ResponseTime, ASectionAtACeilingBlocksOnlyTheTasksAtOrBelowIt) {
+  // Groups 0, 1, 2; a section of 3 at ceiling 1 and one of 1 at ceiling 2: t0 is above both (B 0, R 1), t1 is
+  // blocked by the longer (B 3, R 3 + 1 + 1 = 5), t2 by either, the longer (B 3, R 3 + 1 + 1 + 1 = 6).
+  TaskSet set = in_order(tasks_of({{1, 20}, {1, 20}, {1, 20}}));
+  set.core.sections = {{1, 3}, {2, 1}};
+  const Analysis analysis = analyse(set).value();
+  EXPECT_DOUBLE_EQ(analysis.tasks[0].blocking, 0);
+  EXPECT_DOUBLE_EQ(analysis.tasks[0].response, 1);
+  EXPECT_DOUBLE_EQ(analysis.tasks[1].blocking, 3);
+  EXPECT_DOUBLE_EQ(analysis.tasks[1].response, 5);
+  EXPECT_DOUBLE_EQ(analysis.tasks[2].blocking, 3);
+  EXPECT_DOUBLE_EQ(analysis.tasks[2].response, 6);
+}
+
 TEST(ResponseTime, ArbitraryDeadlinesLookAtEveryJobOfTheBusyPeriod) {
   // t0 (C 26, T 70), t1 (C 62, T 100, D 120), the classic case where a later job is the worst (Lehoczky 1990 style):
   // by hand, the level-2 busy period holds 7 jobs of t1; job q finishes at F(q) with

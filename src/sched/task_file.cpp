@@ -80,9 +80,9 @@ Result<Core> read_core(const Reader& reader, const YAML::Node& node) {
   Core core;
   if (!node) return core;
   if (!node.IsMap()) return reader.at(node, "core: expected a map of fields");
-  if (auto unknown = reader.only(
-          node, "core",
-          {"priority_bits", "sub_priority_bits", "entry_overhead_us", "exit_overhead_us", "masked_section_us"})) {
+  if (auto unknown = reader.only(node, "core",
+                                 {"priority_bits", "sub_priority_bits", "entry_overhead_us", "exit_overhead_us",
+                                  "masked_section_us", "sections"})) {
     return *unknown;
   }
   auto bits = reader.integer(node, "core", "priority_bits", 4, 8);
@@ -97,6 +97,21 @@ Result<Core> read_core(const Reader& reader, const YAML::Node& node) {
     auto value = reader.time_field(node, "core", field, 0.0);
     if (!value) return Failure{value.error()};
     *target = value.value();
+  }
+  const YAML::Node sections = node["sections"];
+  if (sections && !sections.IsSequence()) return reader.at(sections, "core: sections: expected a list");
+  const int groups = 1 << (core.priority_bits - core.sub_priority_bits);
+  for (std::size_t index = 0; sections && index < sections.size(); ++index) {
+    const YAML::Node section = sections[index];
+    const std::string where = "core: section " + std::to_string(index + 1);
+    if (!section.IsMap()) return reader.at(section, where + ": expected {ceiling, longest_us}");
+    if (auto unknown = reader.only(section, where, {"ceiling", "longest_us"})) return *unknown;
+    if (!section["ceiling"]) return reader.at(section, where + ": 'ceiling' is missing");
+    auto ceiling = reader.integer(section, where, "ceiling", 0, groups - 1);
+    if (!ceiling) return Failure{ceiling.error()};
+    auto longest = reader.time_field(section, where, "longest_us", std::nullopt);
+    if (!longest) return Failure{longest.error()};
+    core.sections.push_back({ceiling.value(), longest.value()});
   }
   return core;
 }

@@ -14,6 +14,8 @@ core:
   entry_overhead_us: 0.06
   exit_overhead_us: 0.05
   masked_section_us: 2
+  sections:
+    - {ceiling: 1, longest_us: 0.4}
 tasks:
   - name: step
     wcet_us: 99.818
@@ -32,6 +34,9 @@ tasks:
   ASSERT_TRUE(set.ok()) << set.error();
   EXPECT_EQ(set.value().core.sub_priority_bits, 1);
   EXPECT_DOUBLE_EQ(set.value().core.masked_section, 2);
+  ASSERT_EQ(set.value().core.sections.size(), 1U);
+  EXPECT_EQ(set.value().core.sections[0].ceiling, 1);
+  EXPECT_DOUBLE_EQ(set.value().core.sections[0].longest, 0.4);
   ASSERT_EQ(set.value().tasks.size(), 2U);
   const Task& step = set.value().tasks[0];
   EXPECT_EQ(step.name, "step");

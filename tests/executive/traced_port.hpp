@@ -17,23 +17,35 @@ class TracedPort : public mps2_an386::ExecutivePort {
  public:
   void task_started(std::size_t task) { record(static_cast<std::uint8_t>(task << 1U)); }
   void task_finished(std::size_t task) { record(static_cast<std::uint8_t>((task << 1U) | 1U)); }
+  // A critical section entered or left, for tests of priority ceilings.
+  void section_entered() { record(section_entered_event); }
+  void section_left() { record(section_left_event); }
 
-  // Prints the first `count` events as "+task" (started) and "-task" (finished).
+  // Prints the first `count` events as "+task" (started), "-task" (finished), "[" and "]" (section entered, left).
   void print_trace(std::size_t count) const {
     TextBuffer<256> line;
     line.append("trace:");
     for (std::size_t event = 0; event < count && event < recorded_; ++event) {
-      line.append(' ').append((events_[event] & 1U) != 0 ? '-' : '+').append(events_[event] >> 1U);
+      const std::uint8_t recorded = events_[event];
+      line.append(' ');
+      if (recorded >= section_entered_event) {
+        line.append(recorded == section_entered_event ? '[' : ']');
+      } else {
+        line.append((recorded & 1U) != 0 ? '-' : '+').append(recorded >> 1U);
+      }
     }
     cortex_m::console_write(line.append('\n').view());
   }
 
  private:
-  // Handlers nest, so recording masks interrupts for the two statements it takes.
+  // Every task records, so recording takes a section at their ceiling for the two statements it takes.
   void record(std::uint8_t event) {
-    const cortex_m::InterruptMask masked;
+    const CriticalSection masked{tasks_ceiling};
     if (recorded_ < events_.size()) events_[recorded_++] = event;
   }
+
+  static constexpr std::uint8_t section_entered_event = 0xFE;  // above any task's events
+  static constexpr std::uint8_t section_left_event = 0xFF;
 
   std::array<std::uint8_t, 128> events_{};
   std::size_t recorded_ = 0;

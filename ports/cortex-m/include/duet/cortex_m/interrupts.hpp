@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "duet/cortex_m/registers.hpp"
+#include "duet/rt/ceiling.hpp"
 
 namespace duet::cortex_m {
 
@@ -53,7 +54,9 @@ inline void restore_interrupts(std::uint32_t saved_primask) {
   asm volatile("msr primask, %0" ::"r"(saved_primask) : "memory");
 }
 
-// mask_interrupts() for as long as it exists. Keep what it guards short; it delays every interrupt.
+// mask_interrupts() for as long as it exists. Keep what it guards short; it delays every interrupt. Only for what is
+// shared with every handler (start-up, the fault path, the console that any priority may write); what tasks share
+// takes a PriorityCeiling instead.
 class InterruptMask {
  public:
   InterruptMask() : saved_primask_(mask_interrupts()) {}
@@ -63,6 +66,41 @@ class InterruptMask {
 
  private:
   std::uint32_t saved_primask_ = 0;
+};
+
+// A critical section at a priority ceiling (Stack Resource Policy, as RTIC does): masks the interrupts of priority
+// `ceiling` (0-15, the NVIC value of a group with its sub-priority bits zero) and every less urgent one, and leaves
+// the more urgent groups free to preempt. BASEPRI compares group priorities only, so the grouping needs no care here.
+// BASEPRI_MAX raises the mask and never lowers it, so sections nest; the destructor puts back the mask it found.
+// BASEPRI 0 masks nothing, so a ceiling of 0 (a resource that a task of group 0 uses) can only be had with PRIMASK,
+// which then delays every interrupt, as InterruptMask does.
+class PriorityCeiling {
+ public:
+  explicit PriorityCeiling(unsigned ceiling) : ceiling_(ceiling) {
+    if (ceiling_ == 0) {
+      saved_ = mask_interrupts();
+    } else {
+      asm volatile("mrs %0, basepri\n msr basepri_max, %1"
+                   : "=&r"(saved_)
+                   : "r"(ceiling_ << (8U - priority_bits))
+                   : "memory");
+    }
+  }
+  ~PriorityCeiling() {
+    if (ceiling_ == 0) {
+      restore_interrupts(saved_);
+    } else {
+      asm volatile("msr basepri, %0" ::"r"(saved_) : "memory");
+    }
+  }
+  // The executive's ceilings (duet/rt/ceiling.hpp): this is every Cortex-M port's CriticalSection.
+  explicit PriorityCeiling(rt::Ceiling ceiling) : PriorityCeiling(unsigned{ceiling.priority}) {}
+  PriorityCeiling(const PriorityCeiling&) = delete;
+  PriorityCeiling& operator=(const PriorityCeiling&) = delete;
+
+ private:
+  unsigned ceiling_;
+  std::uint32_t saved_ = 0;
 };
 
 // The name of system exception `number` ("HardFault"), or "interrupt" for a device interrupt (16 and above).

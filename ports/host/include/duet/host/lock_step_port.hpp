@@ -12,13 +12,16 @@
 
 #include "duet/host/simulated_interrupt_controller.hpp"
 #include "duet/host/task_lines.hpp"
+#include "duet/rt/ceiling.hpp"
 #include "duet/rt/task_table.hpp"
 
 namespace duet::host {
 
 class LockStepPort {
  public:
-  struct CriticalSection {};  // one thread runs every handler: nothing to mask
+  struct CriticalSection {  // one thread runs every handler: nothing to mask
+    explicit CriticalSection(rt::Ceiling /*ceiling*/) {}
+  };
 
   explicit LockStepPort(const rt::ModelDescription& model);
 

@@ -12,13 +12,16 @@
 
 #include "duet/host/simulated_interrupt_controller.hpp"
 #include "duet/host/task_lines.hpp"
+#include "duet/rt/ceiling.hpp"
 #include "duet/rt/task_table.hpp"
 
 namespace duet::host {
 
 class RealTimePort {
  public:
-  struct CriticalSection {};  // handlers already run one at a time, under the port's mutex
+  struct CriticalSection {  // handlers already run one at a time, under the port's mutex
+    explicit CriticalSection(rt::Ceiling /*ceiling*/) {}
+  };
 
   explicit RealTimePort(const rt::ModelDescription& model);
   ~RealTimePort();

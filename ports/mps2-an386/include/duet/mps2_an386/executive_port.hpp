@@ -16,7 +16,7 @@ namespace duet::mps2_an386 {
 
 class ExecutivePort {
  public:
-  using CriticalSection = cortex_m::InterruptMask;
+  using CriticalSection = cortex_m::PriorityCeiling;
 
   // The interrupt line that runs slower rate `rate` (1 or more) in multitasking mode.
   static constexpr unsigned rate_interrupt(std::size_t rate) {
@@ -26,7 +26,8 @@ class ExecutivePort {
   static constexpr std::size_t max_rates = 5;
 
   // Starts the cycle counter, sets the priority grouping and the priority of every task's interrupt from the model's
-  // table, and enables the interrupts of its rates and interrupt tasks. Call before Executive::run(). False, with
+  // table, keeps the ceiling of its tasks for the port's own sections, and enables the interrupts of its rates and
+  // interrupt tasks. Call before Executive::run(). False, with
   // nothing enabled, if the model has more rates than there are software interrupts for them.
   [[nodiscard]] static bool configure(const rt::ModelDescription& model);
 
@@ -48,7 +49,8 @@ class ExecutivePort {
   // The executive's time in microseconds (wrapping as a 32-bit count does, every 72 minutes): the base ticks so far
   // times the period, plus how far the base timer has counted into the current one. DAQ stamps samples with it, so a
   // periodic task's timestamps advance by exactly its period. Not the cycle count that an image with a plant link
-  // gives the executive, which leaves out the link's cycles (plant_link.hpp). Interrupt-safe.
+  // gives the executive, which leaves out the link's cycles (plant_link.hpp). From the model's tasks or anything less
+  // urgent than the most urgent of them (the ceiling of the time's words).
   [[nodiscard]] static std::uint32_t executive_microseconds();
 
  private:
@@ -56,6 +58,12 @@ class ExecutivePort {
 
   static constexpr CmsdkTimer base_timer{timer0_base};
   static constexpr CmsdkTimer cycle_counter{timer1_base};
+
+ protected:
+  // The ceiling of the model's tasks (configure()), and whether the base rate is at it: then the base tick, which
+  // writes the time, can be preempted by none of its readers and needs no section.
+  static rt::Ceiling tasks_ceiling;
+  static bool base_tick_at_ceiling;
 };
 
 // The board's executive port plus an output per task: LED i (leds_register) is lit while task i runs, for i < 8; on
@@ -70,7 +78,7 @@ class LedPerTaskPort : public ExecutivePort {
  private:
   static void set(std::size_t task, bool lit) {
     if (task >= led_count) return;
-    const CriticalSection masked;  // a read-modify-write that nested handlers also do
+    const CriticalSection masked{tasks_ceiling};  // a read-modify-write that every task does
     const std::uint32_t bit = 1U << task;
     volatile std::uint32_t& register_ = cortex_m::register32(leds_register);
     register_ = lit ? (register_ | bit) : (register_ & ~bit);

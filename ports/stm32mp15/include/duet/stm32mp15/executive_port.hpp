@@ -18,7 +18,7 @@ namespace duet::stm32mp15 {
 
 class ExecutivePort {
  public:
-  using CriticalSection = cortex_m::InterruptMask;
+  using CriticalSection = cortex_m::PriorityCeiling;
 
   // The lines of slower rates 1, 2, ...; index 0 is the base rate's, TIM7.
   static constexpr std::array<unsigned, 3> rate_interrupts{interrupt::tim7, spare_interrupts[0], spare_interrupts[1]};

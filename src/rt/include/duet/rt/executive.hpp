@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "duet/rt/ceiling.hpp"
 #include "duet/rt/nested_timing.hpp"
 #include "duet/rt/task_statistics.hpp"
 #include "duet/rt/task_table.hpp"
@@ -30,9 +31,10 @@ concept ExecutivePort = requires(Port& port, std::size_t rate, std::uint32_t per
   port.stop_base_timer();
   { port.base_tick_pending() } -> std::same_as<bool>;  // the next tick came while this one ran
   port.skip_base_tick();                               // forget that pending tick
-  port.trigger_rate(rate);         // multitasking: pend the software interrupt that calls on_rate_interrupt(rate)
-  port.idle();                     // what the core does between interrupts
-  typename Port::CriticalSection;  // masks the interrupts that run tasks while it exists
+  port.trigger_rate(rate);  // multitasking: pend the software interrupt that calls on_rate_interrupt(rate)
+  port.idle();              // what the core does between interrupts
+  // While it exists, masks the interrupts at and below a ceiling (ceiling.hpp) and leaves the more urgent ones be.
+  requires std::constructible_from<typename Port::CriticalSection, Ceiling>;
 };
 
 enum class ExecutiveState : std::uint8_t { created, waiting_for_start, ready, running, stopping, stopped, terminated };
@@ -48,6 +50,10 @@ class Executive {
     if (model_.tasks.size() > TaskCapacity) return TaskTableError::too_many_tasks;
     if (const TaskTableError error = check(model_); error != TaskTableError::none) return error;
     rates_ = rate_count(model_);
+    ceiling_ = rt::tasks_ceiling(model_);
+    for (std::size_t task = 0; task < model_.tasks.size(); ++task) {
+      at_ceiling_[task] = group_priority(model_, task) == ceiling_.priority;
+    }
     model_.initialize();
     state_ = model_.wait_for_start ? ExecutiveState::waiting_for_start : ExecutiveState::ready;
     return TaskTableError::none;
@@ -107,14 +113,14 @@ class Executive {
   void on_base_tick() {
     if (state_.load(std::memory_order_relaxed) != ExecutiveState::running) return;
     const std::uint32_t now = port_.cycles();
-    if (ticks_.read() != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
+    if (ticks_.read_in_writer() != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
     previous_tick_cycles_ = now;
 
-    run_measured(0);
+    run_measured(0, now);
     for (std::size_t rate = 1; rate < rates_; ++rate) {
       if (!is_release_tick(rate)) continue;
       if (model_.tasking_mode == TaskingMode::single) {
-        run_measured(rate);
+        run_measured(rate, port_.cycles());
       } else if (rate_released_[rate].exchange(true)) {
         overrun(rate);  // the previous activation has not finished
       } else {
@@ -124,19 +130,39 @@ class Executive {
     advance_tick();
 
     if (port_.base_tick_pending()) overrun(0);
-    if (model_.final_tick != 0 && ticks_.read() >= model_.final_tick) request_stop(StopReason::final_tick);
+    if (model_.final_tick != 0 && ticks_.read_in_writer() >= model_.final_tick) request_stop(StopReason::final_tick);
   }
 
   // Multitasking: the software interrupt of a slower rate.
   void on_rate_interrupt(std::size_t rate) {
-    if (state_.load(std::memory_order_relaxed) == ExecutiveState::running) run_measured(rate);
+    if (state_.load(std::memory_order_relaxed) == ExecutiveState::running) run_measured(rate, port_.cycles());
     rate_released_[rate] = false;
   }
 
   // The interrupt handler of an interrupt-triggered task (its index in the task table).
   void on_interrupt_task(std::size_t task) {
-    if (state_.load(std::memory_order_relaxed) == ExecutiveState::running) run_measured(task);
+    if (state_.load(std::memory_order_relaxed) == ExecutiveState::running) run_measured(task, port_.cycles());
   }
+
+  // A critical section at `ceiling` for as long as the returned object exists (ceiling.hpp: the ceiling of the tasks
+  // that share what it guards), measured: the longest at each ceiling is longest_section(). For data a model's tasks
+  // share beyond the rate transitions, which need none.
+  class Section {
+   public:
+    Section(Executive& owner, Ceiling ceiling)
+        : masked_(ceiling), executive_(owner), ceiling_(ceiling), start_(owner.port_.cycles()) {}
+    // The time is recorded before the mask is lifted (members are destroyed after the body).
+    ~Section() { executive_.sections_.record(ceiling_, executive_.port_.cycles() - start_); }
+    Section(const Section&) = delete;
+    Section& operator=(const Section&) = delete;
+
+   private:
+    const typename Port::CriticalSection masked_;
+    Executive& executive_;
+    Ceiling ceiling_;
+    std::uint32_t start_;
+  };
+  [[nodiscard]] Section section(Ceiling ceiling) { return Section{*this, ceiling}; }
 
   // True while the base tick `ticks()` releases `rate`: what deterministic rate transitions ask in the faster task.
   [[nodiscard]] bool is_release_tick(std::size_t rate) const { return ticks_until_release_[rate] == 0; }
@@ -148,19 +174,31 @@ class Executive {
   [[nodiscard]] StopReason stop_reason() const { return stop_reason_; }
   [[nodiscard]] const TaskStatistics& statistics(std::size_t task) const { return statistics_[task]; }
   [[nodiscard]] CoreLoad load() const { return {timing_.busy_cycles(), load_.elapsed_cycles}; }
+  // The ceiling of what all tasks share (the executive's own sections), and the longest section measured at a
+  // ceiling, in cycles: blocking for `duet sched`.
+  [[nodiscard]] Ceiling tasks_ceiling() const { return ceiling_; }
+  [[nodiscard]] std::uint32_t longest_section(Ceiling ceiling) const { return sections_.longest(ceiling); }
 
  private:
-  void run_measured(std::size_t task) {
-    {
-      [[maybe_unused]] const typename Port::CriticalSection masked;
-      timing_.begin(port_.cycles());
+  // `start` is the cycle count at which the task's handler began: the base tick has read it already.
+  // Inlined: the base tick runs it on every tick, and a call costs its registers' saving there.
+  [[gnu::always_inline]] void run_measured(std::size_t task, std::uint32_t start) {
+    // The timing of nested tasks is shared by every task: a task at their ceiling is never preempted by another and
+    // takes no section; the others take one at the ceiling.
+    if (at_ceiling_[task]) {
+      timing_.begin(start);
+    } else {
+      [[maybe_unused]] const Section section{*this, ceiling_};
+      timing_.begin(start);
     }
     if constexpr (requires { port_.task_started(task); }) port_.task_started(task);
     model_.tasks[task].entry();
     if constexpr (requires { port_.task_finished(task); }) port_.task_finished(task);
     std::uint32_t net_cycles = 0;
-    {
-      [[maybe_unused]] const typename Port::CriticalSection masked;
+    if (at_ceiling_[task]) {
+      net_cycles = timing_.end(port_.cycles());
+    } else {
+      [[maybe_unused]] const Section section{*this, ceiling_};
       net_cycles = timing_.end(port_.cycles());
     }
     statistics_[task].record(net_cycles);
@@ -197,6 +235,9 @@ class Executive {
   std::array<TaskStatistics, TaskCapacity> statistics_{};
   NestedTiming timing_;
   CoreLoad load_;
+  Ceiling ceiling_;
+  std::array<bool, TaskCapacity> at_ceiling_{};
+  SectionTiming sections_;
 };
 
 }  // namespace duet::rt

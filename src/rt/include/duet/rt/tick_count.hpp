@@ -32,6 +32,11 @@ class TickCount {
     low_.store(low, std::memory_order_relaxed);
   }
 
+  // In the base-tick interrupt only: no one else writes the words, so the writer reads its own count whole.
+  [[nodiscard]] std::uint64_t read_in_writer() const {
+    return (std::uint64_t{high_.load(std::memory_order_relaxed)} << word_bits) | low_.load(std::memory_order_relaxed);
+  }
+
   // From the base tick or a less urgent context: the count as it was before or after any increment, never a mix.
   [[nodiscard]] std::uint64_t read() const {
     std::uint32_t high = high_.load(std::memory_order_relaxed);

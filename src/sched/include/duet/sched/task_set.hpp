@@ -28,12 +28,20 @@ struct Task {
   std::optional<NvicPriority> priority;  // fixed by the user, or assigned
 };
 
+// The longest critical section measured at a priority ceiling (BASEPRI at the most urgent group of the tasks that
+// share what it guards): it can delay every task whose group is that urgent or less (docs/SCHEDULING.md).
+struct CeilingSection {
+  int ceiling = 0;     // the group priority
+  double longest = 0;  // microseconds
+};
+
 struct Core {
   int priority_bits = 4;      // implemented NVIC priority bits (16 levels on the STM32MP15)
   int sub_priority_bits = 0;  // of those, how many are sub-priority (the priority grouping)
   double entry_overhead = 0;  // exception entry, added to each handler's C
   double exit_overhead = 0;   // exception exit, likewise
-  double masked_section = 0;  // the longest time interrupts are masked: blocking for every handler
+  double masked_section = 0;  // the longest time every interrupt is masked (PRIMASK): blocking for every handler
+  std::vector<CeilingSection> sections;  // sections at a ceiling: blocking for the handlers at or below it
 };
 
 struct TaskSet {
