@@ -333,6 +333,49 @@ TEST_F(SlaveFixture, ASampleThatDoesNotFitIsDroppedWholeCountedAndAnnounced) {
   EXPECT_EQ(drain(small_queue), (std::vector<std::string>{"FD 06", "02 AA"}));
 }
 
+// List 0 on event 0 without timestamps: one ODT of two four-byte entries, at 0x1000 and 0x1008.
+std::vector<std::string> one_list_of_words() {
+  return {"FF 00",
+          "D6",
+          "D5 00 01 00",
+          "D4 00 00 00 01",
+          "D3 00 00 00 00 02",
+          "E2 00 00 00 00 00",
+          "E1 FF 04 00 00 10 00 00",
+          "E1 FF 04 00 08 10 00 00",
+          "E0 00 00 00 00 00 01 00",
+          "DE 01 00 00"};
+}
+
+// An ODT whose entries are all four bytes long is copied without reading each entry's size: the sizes are taken
+// again when the list starts again after the master rewrote an entry.
+TEST_F(SlaveFixture, EntrySizesAreTakenAgainWhenAListStarts) {
+  const SlaveConfiguration configuration = make_configuration();
+  Slave slave{configuration};
+  run(slave, one_list_of_words());
+  slave.on_event(0);
+  EXPECT_EQ(drain(queue), (std::vector<std::string>{"00 00 01 02 03 08 09 0A 0B"}));
+  run(slave, {"DE 00 00 00", "E2 00 00 00 00 01", "E1 FF 02 00 0C 10 00 00", "DE 01 00 00"});
+  slave.on_event(0);
+  EXPECT_EQ(drain(queue), (std::vector<std::string>{"00 00 01 02 03 0C 0D"}));
+}
+
+TEST_F(SlaveFixture, FourByteEntriesWrapRoundTheRing) {
+  std::array<std::uint8_t, 40> small{};  // samples of 11 bytes of records: the fourth wraps round
+  TransmitQueue small_queue{small, {}};
+  SlaveConfiguration configuration = make_configuration();
+  configuration.queue = &small_queue;
+  Slave slave{configuration};
+  run(slave, one_list_of_words());
+  for (int sample = 0; sample < 5; ++sample) {
+    measurements[8] = static_cast<std::uint8_t>(sample);
+    slave.on_event(0);
+    EXPECT_EQ(drain(small_queue), (std::vector<std::string>{"00 00 01 02 03 0" + std::to_string(sample) + " 09 0A 0B"}))
+        << sample;
+  }
+  EXPECT_EQ(slave.overloads(), 0U);
+}
+
 TEST_F(SlaveFixture, TheEcuPageIsThePointerTheModelReadsThrough) {
   const SlaveConfiguration configuration = make_configuration();
   Slave slave{configuration};

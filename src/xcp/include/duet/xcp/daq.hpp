@@ -53,6 +53,9 @@ struct Odt {
   std::uint16_t first_entry = 0;
   std::uint8_t entry_count = 0;
   std::uint16_t packet_size = 0;  // PID, timestamp if any, entries: fixed when its list starts
+  // The size all its entries share, 0 if they differ (fixed with packet_size): four-byte signals, the usual case, are
+  // copied by a loop that reads no sizes.
+  std::uint8_t entry_size = 0;
 };
 
 struct DaqList {
@@ -64,6 +67,7 @@ struct DaqList {
   std::uint8_t prescaler = 1;
   std::uint8_t priority = 0;
   std::uint8_t prescaler_count = 0;  // the event's own context only
+  std::uint32_t sample_bytes = 0;    // what one sample's records take in the transmit queue: fixed when it starts
   bool selected = false;
   std::atomic<bool> running{false};
 };
