@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 
+#include "balbot.hpp"
 #include "duet/link/pacer.hpp"
 #include "duet/link/remote_plant.hpp"
 #include "duet/link/tcp.hpp"
@@ -89,7 +90,7 @@ int run(const Options& options) {
     auto stream = link::connect_tcp(address.value());
     if (!stream) return fail(stream.error() + " (is 'duet plant serve balbot' running?)");
     const link::LinkMode mode = options.real_time ? link::LinkMode::real_time : link::LinkMode::lock_step;
-    auto connected = link::RemotePlant::connect(std::move(stream).value(), {mode, 0.001});
+    auto connected = link::RemotePlant::connect(std::move(stream).value(), {mode, balbot::description.base_period_ns});
     if (!connected) return fail(connected.error());
     remote = connected.value().get();
     plant = std::move(connected).value();

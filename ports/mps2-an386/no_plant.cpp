@@ -16,7 +16,13 @@ namespace {
 
 }  // namespace
 
-[[gnu::weak]] void write(std::string_view resource, std::span<const double>) { no_plant(resource); }
-[[gnu::weak]] void read(std::string_view resource, std::span<double>) { no_plant(resource); }
+[[gnu::weak]] void plant_write(std::string_view resource, std::span<const bool>) { no_plant(resource); }
+[[gnu::weak]] void plant_write(std::string_view resource, std::span<const std::uint8_t>) { no_plant(resource); }
+[[gnu::weak]] void plant_write(std::string_view resource, std::span<const std::uint16_t>) { no_plant(resource); }
+[[gnu::weak]] void plant_write(std::string_view resource, std::span<const float>) { no_plant(resource); }
+[[gnu::weak]] void plant_read(std::string_view resource, std::span<bool>) { no_plant(resource); }
+[[gnu::weak]] void plant_read(std::string_view resource, std::span<std::uint8_t>) { no_plant(resource); }
+[[gnu::weak]] void plant_read(std::string_view resource, std::span<std::uint16_t>) { no_plant(resource); }
+[[gnu::weak]] void plant_read(std::string_view resource, std::span<std::uint32_t>) { no_plant(resource); }
 
 }  // namespace duet::hardware

@@ -11,6 +11,16 @@ namespace {
 using link::FrameKind;
 namespace semihosting = cortex_m::semihosting;
 
+// Compared byte by byte: std::string_view's == may call memcmp, a library routine this code, which runs in the base
+// tick's handler, keeps out of every interrupt's reach (the call-graph scan, ports/cortex-m/README.md).
+bool same_name(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    if (a[k] != b[k]) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 // Interrupts masked and the cycles counted as the link's for as long as it exists.
@@ -59,41 +69,62 @@ bool PlantLink::connect(std::string_view to_plant, std::string_view from_plant, 
   send(link::encode_hello(frame_, {link::protocol_version, link::LinkMode::lock_step, base_period_ns}));
   if (!expect(FrameKind::hello_ok)) return false;
   link::HelloOk hello_ok;
-  if (link::parse(decoder_.payload(), hello_ok) != link::FrameError::none ||
-      hello_ok.version != link::protocol_version) {
+  if (link::parse(decoder_.payload(), hello_ok) != link::FrameError::none) {
     fail("the plant answered HELLO with a bad HELLO_OK");
+  } else if (hello_ok.version != link::protocol_version) {
+    TextBuffer<80> versions;
+    versions.append(hello_ok.version).append("; this firmware speaks version ").append(link::protocol_version);
+    fail("the plant answered HELLO with link protocol version ", versions.view());
   }
   return ok();
 }
 
-void PlantLink::write(std::string_view resource, std::span<const double> values) {
+template <typename Element>
+void PlantLink::write(std::string_view resource, std::span<const Element> values) {
   if (!ok()) return;
   const LinkSection section;
   const std::span<const std::uint8_t> frame = link::encode_write(frame_, resource, values);
   if (frame.empty()) return fail("a WRITE too long for the link's buffer: ", resource);
   send(frame);
 }
+// What hardware.hpp's calls write: a pin's level, an SPI transfer's bytes, an ADC sequence's length, a PWM duty.
+template void PlantLink::write(std::string_view, std::span<const bool>);
+template void PlantLink::write(std::string_view, std::span<const std::uint8_t>);
+template void PlantLink::write(std::string_view, std::span<const std::uint16_t>);
+template void PlantLink::write(std::string_view, std::span<const float>);
 
-void PlantLink::read(std::string_view resource, std::span<double> values) {
-  for (double& value : values) value = 0.0;
+template <typename Element>
+void PlantLink::read(std::string_view resource, std::span<Element> values) {
+  for (Element& value : values) value = Element{};
   if (!ok()) return;
   const LinkSection section;
+  constexpr link::ElementType type = link::element_type_of<Element>;
+  if (values.size() > link::max_read_count(type) ||
+      values.size() * link::element_size(type) + 3 > max_received_payload) {
+    return fail("a READ too long for the link: ", resource);
+  }
   const std::span<const std::uint8_t> frame =
-      link::encode_read(frame_, resource, static_cast<std::uint16_t>(values.size()));
-  if (frame.empty() || values.size() > link::max_read_values) return fail("a READ too long for the link: ", resource);
+      link::encode_read(frame_, resource, type, static_cast<std::uint16_t>(values.size()));
+  if (frame.empty()) return fail("a READ too long for the link's buffer: ", resource);
   send(frame);
   if (!expect(FrameKind::values)) return;
   link::Values answer;
-  if (link::parse(decoder_.payload(), answer) != link::FrameError::none || answer.values.size() != values.size()) {
-    return fail("the plant answered a READ with the wrong number of values: ", resource);
+  if (link::parse(decoder_.payload(), answer) != link::FrameError::none || answer.values.type() != type ||
+      answer.values.size() != values.size()) {
+    return fail("the plant answered a READ with other values than it asked for: ", resource);
   }
   answer.values.copy_to(values);
 }
+// What hardware.hpp's calls read: a pin's level, received SPI bytes, ADC samples, a capture.
+template void PlantLink::read(std::string_view, std::span<bool>);
+template void PlantLink::read(std::string_view, std::span<std::uint8_t>);
+template void PlantLink::read(std::string_view, std::span<std::uint16_t>);
+template void PlantLink::read(std::string_view, std::span<std::uint32_t>);
 
-void PlantLink::tick(double time_s) {
+void PlantLink::tick(std::uint64_t tick) {
   if (!ok()) return;
   LinkSection section;
-  send(link::encode_tick(frame_, time_s));
+  send(link::encode_tick(frame_, tick));
   while (receive()) {
     if (decoder_.kind() == FrameKind::tick_done) return;
     link::Interrupt interrupt;
@@ -118,7 +149,7 @@ void PlantLink::bye() {
 // meanwhile, as the protocol wants them: before INTERRUPT_DONE.
 bool PlantLink::raise(std::string_view name, LinkSection& section) {
   for (const PlantInterrupt& interrupt : plant_interrupts) {
-    if (interrupt.name != name) continue;
+    if (!same_name(interrupt.name, name)) continue;
     section.release_while([line = interrupt.line] {
       cortex_m::set_interrupt_pending(line);
       asm volatile("isb" ::: "memory");  // the pended interrupt is taken here

@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
     ::pause();  // the plant gives up on us; duet stops us
     return exit_code;
   }
-  auto plant = duet::link::RemotePlant::connect(std::move(stream), {duet::link::LinkMode::lock_step, 0.001});
+  auto plant = duet::link::RemotePlant::connect(std::move(stream), {duet::link::LinkMode::lock_step, 1'000'000});
   if (!plant) {
     std::cerr << "fake-qemu: " << plant.error() << '\n';
     return 1;

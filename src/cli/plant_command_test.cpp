@@ -151,7 +151,7 @@ TEST(PlantCommand, TheProgramServesOneFirmwareAndSaysHowItWent) {
   EXPECT_EQ(address.host, "127.0.0.1");
   auto stream = link::connect_tcp(address, 10s);
   ASSERT_TRUE(stream.ok()) << stream.error();
-  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.002});
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 2'000'000});
   ASSERT_TRUE(connected.ok()) << connected.error();
   link::RemotePlant& plant = *connected.value();
   const double duty = 0.75;
@@ -177,7 +177,7 @@ TEST(PlantCommand, TheRobotOfAScenario) {
   ASSERT_TRUE(program.started());
   auto stream = link::connect_tcp(listening_address(program, "balbot"), 10s);
   ASSERT_TRUE(stream.ok()) << stream.error();
-  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.001});
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 1'000'000});
   ASSERT_TRUE(connected.ok()) << connected.error();
   for (int tick = 0; tick < 20; ++tick) connected.value()->advance(tick * 0.001, [](std::string_view) {});
   EXPECT_TRUE(connected.value()->ok()) << connected.value()->error();
@@ -200,7 +200,7 @@ TEST(PlantCommand, TheRobotsOwnQuantitiesATickAfterATickAsCsvAndPlot) {
   ASSERT_TRUE(program.started());
   auto stream = link::connect_tcp(listening_address(program, "balbot"), 10s);
   ASSERT_TRUE(stream.ok()) << stream.error();
-  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.001});
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 1'000'000});
   ASSERT_TRUE(connected.ok()) << connected.error();
   for (int tick = 0; tick < 30; ++tick) connected.value()->advance(tick * 0.001, [](std::string_view) {});
   EXPECT_TRUE(connected.value()->close().ok());
@@ -256,7 +256,7 @@ TEST(PlantCommand, TheRobotTakesAPushWhileAFirmwareIsServedAtTheTimeOfItsNextTic
 
   auto stream = link::connect_tcp(address, 10s);
   ASSERT_TRUE(stream.ok()) << stream.error();
-  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 0.001});
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 1'000'000});
   ASSERT_TRUE(connected.ok()) << connected.error();
   connected.value()->advance(0, [](std::string_view) {});
   send_line(*control.value(), {{"type", "plant"}, {"action", "push"}, {"force_n", 3}, {"id", 2}});

@@ -34,7 +34,8 @@ Status Channel::queue(FrameKind kind, Encode&& encode) {
       ++frames_sent_;
       return done();
     }
-    if (queued_ == 0) return Failure{std::string{"cannot send "} + kind_name(kind) + ": it does not fit in a frame"};
+    if (queued_ == 0)
+      return Failure{std::string{"cannot send "} + std::string{kind_name(kind)} + ": it does not fit in a frame"};
     if (Status flushed = flush(); !flushed) return flushed;
   }
 }
@@ -49,32 +50,41 @@ Status Channel::send_hello_ok(const HelloOk& hello_ok) {
 
 Status Channel::send_write(std::string_view resource, std::span<const double> values) {
   if (Status named = check_name("WRITE", resource); !named) return named;
-  if (values.size() > max_values && 1 + resource.size() + 2 + values.size() * 8 > max_payload) {
+  constexpr std::size_t size = element_size(ElementType::f64);
+  if (1 + resource.size() + 3 + values.size() * size > max_payload) {
     return Failure{"cannot send WRITE " + quoted(resource) + " of " + std::to_string(values.size()) +
-                   " values: a frame holds " + std::to_string((max_payload - 3 - resource.size()) / 8) +
+                   " values: a frame holds " + std::to_string((max_payload - 4 - resource.size()) / size) +
                    " with this name"};
   }
   return queue(FrameKind::write,
                [&](std::span<std::uint8_t> buffer) { return encode_write(buffer, resource, values); });
 }
 
-Status Channel::send_read(std::string_view resource, std::size_t count) {
+Status Channel::send_read(std::string_view resource, ElementType type, std::size_t count) {
   if (Status named = check_name("READ", resource); !named) return named;
-  if (count > max_read_values) {
-    return Failure{"cannot send READ " + quoted(resource) + " of " + std::to_string(count) + " values: at most " +
-                   std::to_string(max_read_values) + " fit in the VALUES that answers it"};
+  if (count > max_read_count(type)) {
+    return Failure{"cannot send READ " + quoted(resource) + " of " + std::to_string(count) + " " +
+                   std::string{element_type_name(type)} + " values: at most " + std::to_string(max_read_count(type)) +
+                   " fit in the VALUES that answers it"};
   }
   return queue(FrameKind::read, [&](std::span<std::uint8_t> buffer) {
-    return encode_read(buffer, resource, static_cast<std::uint16_t>(count));
+    return encode_read(buffer, resource, type, static_cast<std::uint16_t>(count));
   });
 }
 
-Status Channel::send_values(std::span<const double> values) {
+template <typename T>
+Status Channel::send_values(std::span<const T> values) {
   return queue(FrameKind::values, [&](std::span<std::uint8_t> buffer) { return encode_values(buffer, values); });
 }
+template Status Channel::send_values(std::span<const bool>);
+template Status Channel::send_values(std::span<const std::uint8_t>);
+template Status Channel::send_values(std::span<const std::uint16_t>);
+template Status Channel::send_values(std::span<const std::uint32_t>);
+template Status Channel::send_values(std::span<const float>);
+template Status Channel::send_values(std::span<const double>);
 
-Status Channel::send_tick(double time_s) {
-  return queue(FrameKind::tick, [&](std::span<std::uint8_t> buffer) { return encode_tick(buffer, time_s); });
+Status Channel::send_tick(std::uint64_t tick) {
+  return queue(FrameKind::tick, [&](std::span<std::uint8_t> buffer) { return encode_tick(buffer, tick); });
 }
 
 Status Channel::send_interrupt(std::string_view name) {
@@ -121,11 +131,11 @@ Result<std::optional<ReceivedFrame>> Channel::receive(std::string_view awaiting)
 
 std::string Channel::bad_frame() const {
   const std::uint8_t kind = decoder_.partial_kind();
-  std::string message = peer_ + " sent a bad frame (" + describe(decoder_.error());
+  std::string message = peer_ + " sent a bad frame (" + std::string{describe(decoder_.error())};
   if (decoder_.error() == FrameError::unknown_kind) {
     message += " " + hex_byte(kind);
   } else {
-    message += std::string{": "} + kind_name(static_cast<FrameKind>(kind)) + " announcing " +
+    message += std::string{": "} + std::string{kind_name(static_cast<FrameKind>(kind))} + " announcing " +
                std::to_string(decoder_.announced()) + " bytes";
   }
   return message + ")";
@@ -134,8 +144,9 @@ std::string Channel::bad_frame() const {
 std::string Channel::cut_frame() const {
   const std::string total = decoder_.partial() >= header_size ? std::to_string(header_size + decoder_.announced())
                                                               : "at least " + std::to_string(header_size);
-  return peer_ + " closed the link in the middle of a " + kind_name(static_cast<FrameKind>(decoder_.partial_kind())) +
-         " frame (" + std::to_string(decoder_.partial()) + " of " + total + " bytes)";
+  return peer_ + " closed the link in the middle of a " +
+         std::string{kind_name(static_cast<FrameKind>(decoder_.partial_kind()))} + " frame (" +
+         std::to_string(decoder_.partial()) + " of " + total + " bytes)";
 }
 
 Failure Channel::fail(const std::string& message) {

@@ -77,8 +77,9 @@ RemoteRun simulate_over_link(const model::Program& program, plant::Plant& remote
   std::thread plant_side{[&] { served.emplace(serve(remote_plant, *plant_end)); }};
   RemoteRun run;
   {
-    auto connected = RemotePlant::connect(std::move(pair.value().first),
-                                          {LinkMode::lock_step, program.model->base_period_us * 1e-6});
+    auto connected = RemotePlant::connect(
+        std::move(pair.value().first),
+        {LinkMode::lock_step, static_cast<std::uint32_t>(std::llround(program.model->base_period_us * 1000))});
     EXPECT_TRUE(connected.ok()) << connected.error();
     if (connected) {
       auto simulated = model::simulate(program, *connected.value(), options);

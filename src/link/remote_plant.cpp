@@ -2,17 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 namespace duet::link {
 namespace {
 
 constexpr std::string_view plant_name = "the plant";
-
-std::uint32_t period_ns(double period_s) {
-  if (!(period_s > 0)) return 0;
-  return static_cast<std::uint32_t>(std::min(std::llround(period_s * 1e9), 0xFFFF'FFFFLL));
-}
 
 }  // namespace
 
@@ -30,7 +27,10 @@ Result<std::unique_ptr<RemotePlant>> RemotePlant::connect(std::unique_ptr<Stream
 }
 
 Status RemotePlant::greet() {
-  if (Status sent = channel_.send_hello({protocol_version, options_.mode, period_ns(options_.base_period_s)}); !sent) {
+  if (options_.base_period_ns == 0) {
+    return Failure{"the link needs the firmware's base period: the plant's time is tick x base period"};
+  }
+  if (Status sent = channel_.send_hello({protocol_version, options_.mode, options_.base_period_ns}); !sent) {
     return sent;
   }
   auto answer = channel_.receive("HELLO_OK");
@@ -41,8 +41,8 @@ Status RemotePlant::greet() {
   HelloOk hello_ok;
   (void)parse(frame.payload, hello_ok);  // the decoder checked its one byte
   if (hello_ok.version != protocol_version) {
-    return channel_.fail("the plant answered HELLO with protocol version " + std::to_string(hello_ok.version) +
-                         "; this firmware speaks " + std::to_string(protocol_version));
+    return channel_.fail("the plant answered HELLO with link protocol version " + std::to_string(hello_ok.version) +
+                         "; this firmware speaks version " + std::to_string(protocol_version) + " only");
   }
   return done();
 }
@@ -74,8 +74,18 @@ Failure RemotePlant::unexpected(FrameKind kind, std::span<const std::uint8_t> pa
 
 void RemotePlant::advance(double time_s, const plant::RaiseInterrupt& raise) {
   if (!usable()) return;
+  const double period_s = options_.base_period_ns * 1e-9;
+  const double ticks = std::round(time_s / period_s);
+  const auto tick = static_cast<std::uint64_t>(ticks >= 0 && ticks < 0x1p63 ? ticks : 0);
+  if (tick_time_s(tick, options_.base_period_ns) != time_s) {
+    std::ostringstream message;
+    message << std::setprecision(17) << "advance(" << time_s << ") is no tick's time at the base period of "
+            << options_.base_period_ns << " ns (tick x " << period_s
+            << " s): the link carries tick numbers, and the plant computes each tick's time so";
+    return fail(channel_.fail(message.str()));
+  }
   if (options_.mode == LinkMode::real_time) pacer_.wait_until(time_s);
-  if (Status sent = channel_.send_tick(time_s); !sent) return fail(Failure{sent.error()});
+  if (Status sent = channel_.send_tick(tick); !sent) return fail(Failure{sent.error()});
   ++ticks_;
   serve_tick(raise);
 }
@@ -113,7 +123,9 @@ void RemotePlant::write(std::string_view resource, std::span<const double> value
 void RemotePlant::read(std::string_view resource, std::span<double> values) {
   std::fill(values.begin(), values.end(), 0.0);
   if (!usable()) return;
-  if (Status sent = channel_.send_read(resource, values.size()); !sent) return fail(channel_.fail(sent.error()));
+  if (Status sent = channel_.send_read(resource, ElementType::f64, values.size()); !sent) {
+    return fail(channel_.fail(sent.error()));
+  }
   auto received = channel_.receive("VALUES");
   if (!received) return fail(Failure{received.error()});
   if (!received.value()) return fail(channel_.peer_failure("closed the link instead of answering READ"));
@@ -123,9 +135,11 @@ void RemotePlant::read(std::string_view resource, std::span<double> values) {
   if (const FrameError error = parse(frame.payload, answer); error != FrameError::none) {
     return fail(channel_.fail("the plant sent bad VALUES (" + std::string{describe(error)} + ")"));
   }
-  if (answer.values.size() != values.size()) {
+  if (answer.values.type() != ElementType::f64 || answer.values.size() != values.size()) {
     return fail(channel_.fail("the plant answered READ '" + std::string{resource} + "' of " +
-                              std::to_string(values.size()) + " values with " + std::to_string(answer.values.size())));
+                              std::to_string(values.size()) + " f64 values with " +
+                              std::to_string(answer.values.size()) + " " +
+                              std::string{element_type_name(answer.values.type())}));
   }
   answer.values.copy_to(values);
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <optional>
 #include <string>
@@ -19,6 +20,9 @@ namespace duet::link {
 namespace {
 
 using namespace std::chrono_literals;
+
+constexpr RemotePlantOptions one_ms{LinkMode::lock_step, 1'000'000};
+constexpr Hello hello_one_ms{protocol_version, LinkMode::lock_step, 1'000'000};
 
 // serve() in a thread of its own over one end of a stream pair; the other end is the firmware's.
 class PlantThread {
@@ -77,7 +81,7 @@ TEST(RemotePlant, ALoopbackOverTheLinkAnswersWhatWasWritten) {
   plant::Loopback loopback;
   Linked link = linked();
   PlantThread plant_side{loopback, std::move(link.plant)};
-  auto connected = RemotePlant::connect(std::move(link.firmware), {LinkMode::lock_step, 0.001});
+  auto connected = RemotePlant::connect(std::move(link.firmware), one_ms);
   ASSERT_TRUE(connected.ok()) << connected.error();
   RemotePlant& remote = *connected.value();
   const double duty[] = {0.25, -0.5, 1e-300};
@@ -134,7 +138,7 @@ TEST(RemotePlant, InterruptsRunTheFirmwaresTaskInTheMiddleOfTheTick) {
   ScriptedPlant scripted;
   Linked link = linked();
   PlantThread plant_side{scripted, std::move(link.plant)};
-  auto connected = RemotePlant::connect(std::move(link.firmware));
+  auto connected = RemotePlant::connect(std::move(link.firmware), one_ms);
   ASSERT_TRUE(connected.ok()) << connected.error();
   RemotePlant& remote = *connected.value();
   std::vector<std::string> raised;
@@ -165,7 +169,7 @@ TEST(RemotePlant, APipePairWorksAsWell) {
   auto pair = pipe_pair(2s);
   ASSERT_TRUE(pair.ok());
   PlantThread plant_side{loopback, std::move(pair.value().second)};
-  auto connected = RemotePlant::connect(std::move(pair.value().first));
+  auto connected = RemotePlant::connect(std::move(pair.value().first), one_ms);
   ASSERT_TRUE(connected.ok()) << connected.error();
   const double one = 1;
   connected.value()->write("gpio:LED0", {&one, 1});
@@ -180,7 +184,7 @@ TEST(RemotePlant, RealTimeSendsEachTickWhenItsTimeComes) {
   plant::Loopback loopback;
   Linked link = linked();
   PlantThread plant_side{loopback, std::move(link.plant)};
-  auto connected = RemotePlant::connect(std::move(link.firmware), {LinkMode::real_time, 0.01});
+  auto connected = RemotePlant::connect(std::move(link.firmware), {LinkMode::real_time, 10'000'000});
   ASSERT_TRUE(connected.ok()) << connected.error();
   const auto start = std::chrono::steady_clock::now();
   for (int tick = 0; tick < 5; ++tick) connected.value()->advance(tick * 0.01, {});
@@ -201,7 +205,7 @@ RemotePlant& connect_to(Peer& plant_peer, std::unique_ptr<Stream> firmware, std:
     EXPECT_TRUE(plant_peer.channel().flush().ok());
     script(plant_peer);
   }};
-  auto connected = RemotePlant::connect(std::move(firmware));
+  auto connected = RemotePlant::connect(std::move(firmware), one_ms);
   EXPECT_TRUE(connected.ok()) << connected.error();
   remote = std::move(connected).value();
   return *remote;
@@ -216,7 +220,7 @@ TEST(RemotePlant, APlantThatClosesInTheMiddleOfAFrame) {
     EXPECT_EQ(peer.expect_frame(), FrameKind::read);
     std::array<std::uint8_t, max_frame> buffer{};
     const double values[2] = {1, 2};
-    const auto frame = encode_values(buffer, values);
+    const auto frame = encode_values(buffer, std::span<const double>{values});
     EXPECT_TRUE(peer.stream().write_all(frame.first(7)).ok());
     peer.close();
   });
@@ -225,11 +229,11 @@ TEST(RemotePlant, APlantThatClosesInTheMiddleOfAFrame) {
   script.join();
   ASSERT_FALSE(plant.ok());
   EXPECT_EQ(plant.error(),
-            "the plant closed the link in the middle of a VALUES frame (7 of 21 bytes) while awaiting VALUES");
+            "the plant closed the link in the middle of a VALUES frame (7 of 22 bytes) while awaiting VALUES");
   EXPECT_EQ(values[0], 0.0);
   plant.advance(1.0, {});  // does nothing now: the failure stays the first one
   EXPECT_EQ(plant.error(),
-            "the plant closed the link in the middle of a VALUES frame (7 of 21 bytes) while awaiting VALUES");
+            "the plant closed the link in the middle of a VALUES frame (7 of 22 bytes) while awaiting VALUES");
 }
 
 TEST(RemotePlant, APlantThatReportsAnError) {
@@ -287,7 +291,7 @@ TEST(RemotePlant, APlantThatSendsGarbage) {
 TEST(RemotePlant, ASilentPlantTimesOut) {
   Linked link = linked(50ms);
   Peer plant_peer{std::move(link.plant), "the firmware"};  // never answers
-  auto connected = RemotePlant::connect(std::move(link.firmware));
+  auto connected = RemotePlant::connect(std::move(link.firmware), one_ms);
   ASSERT_FALSE(connected.ok());
   EXPECT_EQ(connected.error(), "link to the plant: nothing received for 50 ms while awaiting HELLO_OK");
 }
@@ -297,13 +301,14 @@ TEST(RemotePlant, APlantThatWantsAnotherVersion) {
   Peer plant_peer{std::move(link.plant), "the firmware"};
   std::thread script{[&] {
     EXPECT_EQ(plant_peer.expect_frame(), FrameKind::hello);
-    EXPECT_TRUE(plant_peer.channel().send_hello_ok({2}).ok());
+    EXPECT_TRUE(plant_peer.channel().send_hello_ok({1}).ok());
     EXPECT_TRUE(plant_peer.channel().flush().ok());
   }};
-  auto connected = RemotePlant::connect(std::move(link.firmware));
+  auto connected = RemotePlant::connect(std::move(link.firmware), one_ms);
   script.join();
   ASSERT_FALSE(connected.ok());
-  EXPECT_EQ(connected.error(), "the plant answered HELLO with protocol version 2; this firmware speaks 1");
+  EXPECT_EQ(connected.error(),
+            "the plant answered HELLO with link protocol version 1; this firmware speaks version 2 only");
   EXPECT_EQ(plant_peer.expect_frame(), FrameKind::error);  // the firmware says why, and nothing more: no BYE
   auto end = plant_peer.channel().receive("the end");
   ASSERT_TRUE(end.ok()) << end.error();
@@ -334,23 +339,148 @@ TEST(Serve, FirmwareThatDoesNotSayHelloFirst) {
 
 TEST(Serve, FirmwareOfAnotherVersion) {
   plant::Loopback loopback;
+  for (const std::uint8_t version : std::initializer_list<std::uint8_t>{1, 9}) {
+    const std::string said =
+        "the firmware speaks link protocol version " + std::to_string(version) + "; this plant speaks version 2 only";
+    auto result = serve_against(loopback, [&](Peer& firmware) {
+      // Version 1's HELLO has version 2's layout, so that an old firmware hears why.
+      const std::uint8_t hello[] = {0x01, 6, 0, version, 0, 0x40, 0x42, 0x0F, 0x00};
+      EXPECT_TRUE(firmware.stream().write_all(hello).ok());
+      EXPECT_EQ(firmware.expect_frame(), FrameKind::error);
+      ErrorText text;
+      EXPECT_EQ(parse(firmware.payload(), text), FrameError::none);
+      EXPECT_EQ(text.text, said);
+    });
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.error(), said);
+  }
+}
+
+TEST(Serve, AHelloWithoutABasePeriodIsRefused) {
+  plant::Loopback loopback;
   auto result = serve_against(loopback, [](Peer& firmware) {
-    EXPECT_TRUE(firmware.channel().send_hello({9, LinkMode::lock_step, 1000}).ok());
+    EXPECT_TRUE(firmware.channel().send_hello({protocol_version, LinkMode::lock_step, 0}).ok());
     EXPECT_EQ(firmware.expect_frame(), FrameKind::error);
-    ErrorText text;
-    EXPECT_EQ(parse(firmware.payload(), text), FrameError::none);
-    EXPECT_EQ(text.text, "the firmware speaks link protocol version 9; this plant speaks 1");
   });
   ASSERT_FALSE(result.ok());
-  EXPECT_EQ(result.error(), "the firmware speaks link protocol version 9; this plant speaks 1");
+  EXPECT_EQ(result.error(), "the firmware's HELLO gives a base period of 0 ns: the plant's time is tick x base period");
+}
+
+// The plant's time at each TICK.
+class Clockwork : public plant::Plant {
+ public:
+  void advance(double time_s, const plant::RaiseInterrupt&) override { times.push_back(time_s); }
+  void write(std::string_view, std::span<const double>) override {}
+  void read(std::string_view, std::span<double>) override {}
+  std::vector<double> times;
+};
+
+TEST(Serve, ATicksTimeIsItsNumberTimesTheBasePeriodInSeconds) {
+  Clockwork clockwork;
+  auto result = serve_against(clockwork, [](Peer& firmware) {
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
+    EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
+    for (const std::uint64_t tick : {0ULL, 9ULL, 1ULL << 40}) {
+      EXPECT_TRUE(firmware.channel().send_tick(tick).ok());
+      EXPECT_EQ(firmware.expect_frame(), FrameKind::tick_done);
+    }
+    EXPECT_TRUE(firmware.channel().send_empty(FrameKind::bye).ok());
+    EXPECT_TRUE(firmware.channel().flush().ok());
+  });
+  ASSERT_TRUE(result.ok()) << result.error();
+  // As duet sim's robot computes it: static_cast<double>(tick) * (period_ns * 1e-9). Tick 9 at 1 ms is
+  // 0.009000000000000001, not the 0.009 that 9,000,000 ns would give.
+  ASSERT_EQ(clockwork.times.size(), 3U);
+  EXPECT_EQ(clockwork.times[0], 0.0);
+  EXPECT_EQ(clockwork.times[1], 9.0 * (1'000'000 * 1e-9));
+  EXPECT_NE(clockwork.times[1], 0.009);
+  EXPECT_EQ(clockwork.times[2], 1099511627776.0 * 0.001);
+  EXPECT_EQ(result.value().last_tick_s, clockwork.times[2]);
+}
+
+// duet::blocks::convert's rules (convert.hpp): to bool u != 0, a NaN true; floating to integer NaN 0, truncated
+// toward zero and saturated; double to float rounded to nearest, beyond float's range an infinity.
+TEST(Serve, TypedElementsAreConvertedAsTheInterpreterConvertsThem) {
+  plant::Loopback loopback;
+  auto result = serve_against(loopback, [](Peer& firmware) {
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
+    EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
+    // Typed writes, as the firmware on QEMU sends them (type bytes from docs/LINK.md's table).
+    const std::uint8_t writes[] = {0x03, 0x09, 0, 3, 's', 'p', 'i', 0x02, 2, 0, 200,  7,                  // u8 [200, 7]
+                                   0x03, 0x08, 0, 3, 'p', 'i', 'n', 0x01, 1, 0, 1,                        // bool [true]
+                                   0x03, 0x0B, 0, 3, 'p', 'w', 'm', 0x05, 1, 0, 0xCD, 0xCC, 0xCC, 0x3E,   // f32 [0.4f]
+                                   0x03, 0x09, 0, 3, 'a', 'd', 'c', 0x03, 1, 0, 0x64, 0x00,               // u16 [100]
+                                   0x03, 0x0B, 0, 3, 'c', 'a', 'p', 0x04, 1, 0, 0x70, 0x11, 0x01, 0x00};  // u32 [70000]
+    EXPECT_TRUE(firmware.stream().write_all(writes).ok());
+    const double odd[] = {300.7, -2.5, std::nan(""), 1e300, 0.5};
+    EXPECT_TRUE(firmware.channel().send_write("odd", odd).ok());
+    // The same five doubles read back as u8, bool, u16, u32 and f32.
+    const auto read_back = [&](ElementType type) {
+      EXPECT_TRUE(firmware.channel().send_read("odd", type, 5).ok());
+      EXPECT_EQ(firmware.expect_frame(), FrameKind::values);
+      return firmware.payload();
+    };
+    EXPECT_EQ(read_back(ElementType::u8), (std::vector<std::uint8_t>{0x02, 5, 0, 255, 0, 0, 255, 0}));
+    EXPECT_EQ(read_back(ElementType::boolean), (std::vector<std::uint8_t>{0x01, 5, 0, 1, 1, 1, 1, 1}));
+    EXPECT_EQ(read_back(ElementType::u16),
+              (std::vector<std::uint8_t>{0x03, 5, 0, 0x2C, 0x01, 0, 0, 0, 0, 0xFF, 0xFF, 0, 0}));
+    EXPECT_EQ(read_back(ElementType::u32), (std::vector<std::uint8_t>{0x04, 5, 0, 0x2C, 0x01, 0,    0,    0, 0, 0, 0, 0,
+                                                                      0,    0, 0, 0xFF, 0xFF, 0xFF, 0xFF, 0, 0, 0, 0}));
+    // f32: 300.7 rounds to 0x4396599A, -2.5 is 0xC0200000, NaN stays a NaN, 1e300 is +inf, 0.5 0x3F000000.
+    const std::vector<std::uint8_t> floats = read_back(ElementType::f32);
+    ASSERT_EQ(floats.size(), 3U + 5 * 4);
+    EXPECT_EQ(std::vector<std::uint8_t>(floats.begin() + 3, floats.begin() + 11),
+              (std::vector<std::uint8_t>{0x9A, 0x59, 0x96, 0x43, 0x00, 0x00, 0x20, 0xC0}));
+    EXPECT_EQ(floats[3 + 8 + 3] & 0x7F, 0x7F);  // NaN: exponent all ones
+    EXPECT_EQ(std::vector<std::uint8_t>(floats.begin() + 15, floats.end()),
+              (std::vector<std::uint8_t>{0x00, 0x00, 0x80, 0x7F, 0x00, 0x00, 0x00, 0x3F}));
+    EXPECT_TRUE(firmware.channel().send_empty(FrameKind::bye).ok());
+    EXPECT_TRUE(firmware.channel().flush().ok());
+  });
+  ASSERT_TRUE(result.ok()) << result.error();
+  EXPECT_EQ(loopback.value("spi"), (std::vector<double>{200, 7}));
+  EXPECT_EQ(loopback.value("pin"), std::vector<double>{1});
+  EXPECT_EQ(loopback.value("pwm"), std::vector<double>{static_cast<double>(0.4F)});
+  EXPECT_EQ(loopback.value("adc"), std::vector<double>{100});
+  EXPECT_EQ(loopback.value("cap"), std::vector<double>{70'000});
+}
+
+TEST(Serve, AReadOfMoreThanAValuesHoldsIsRefused) {
+  plant::Loopback loopback;
+  auto result = serve_against(loopback, [](Peer& firmware) {
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
+    EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
+    const std::uint8_t read[] = {0x04, 0x05, 0, 1, 'x', 0x06, 0x00, 0x02};  // 512 f64
+    EXPECT_TRUE(firmware.stream().write_all(read).ok());
+    EXPECT_EQ(firmware.expect_frame(), FrameKind::error);
+  });
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error(), "the firmware asked for 512 f64 values of 'x'; a VALUES frame holds at most 511");
+}
+
+TEST(RemotePlant, ATimeThatIsNoTicksTimeFailsTheLink) {
+  plant::Loopback loopback;
+  Linked link = linked();
+  PlantThread plant_side{loopback, std::move(link.plant)};
+  auto connected = RemotePlant::connect(std::move(link.firmware), one_ms);
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  connected.value()->advance(0.009000000000000001, {});  // tick 9
+  EXPECT_TRUE(connected.value()->ok());
+  connected.value()->advance(0.0009765625, {});  // 2^-10 s: between ticks 0 and 1
+  ASSERT_FALSE(connected.value()->ok());
+  EXPECT_EQ(
+      connected.value()->error(),
+      "advance(0.0009765625) is no tick's time at the base period of 1000000 ns (tick x 0.001 s): the link carries "
+      "tick numbers, and the plant computes each tick's time so");
+  EXPECT_FALSE(plant_side.finish().ok());
 }
 
 TEST(Serve, FirmwareThatGoesAwayInTheMiddleOfAnInterrupt) {
   ScriptedPlant scripted;
   auto result = serve_against(scripted, [](Peer& firmware) {
-    EXPECT_TRUE(firmware.channel().send_hello({}).ok());
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
     EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
-    EXPECT_TRUE(firmware.channel().send_tick(1.0).ok());
+    EXPECT_TRUE(firmware.channel().send_tick(1000).ok());
     EXPECT_EQ(firmware.expect_frame(), FrameKind::interrupt);
     firmware.close();
   });
@@ -363,7 +493,7 @@ TEST(Serve, FirmwareThatGoesAwayInTheMiddleOfAnInterrupt) {
 TEST(Serve, FirmwareThatSendsGarbageOrAnError) {
   plant::Loopback loopback;
   auto garbage = serve_against(loopback, [](Peer& firmware) {
-    EXPECT_TRUE(firmware.channel().send_hello({}).ok());
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
     EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
     const std::uint8_t bytes[] = {0xEE, 0, 0};
     EXPECT_TRUE(firmware.stream().write_all(bytes).ok());
@@ -373,7 +503,7 @@ TEST(Serve, FirmwareThatSendsGarbageOrAnError) {
   EXPECT_EQ(garbage.error(),
             "the firmware sent a bad frame (unknown frame kind 0xEE) while awaiting WRITE, READ, TICK or BYE");
   auto reported = serve_against(loopback, [](Peer& firmware) {
-    EXPECT_TRUE(firmware.channel().send_hello({}).ok());
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
     EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
     (void)firmware.channel().fail("the executive overran");
   });
@@ -386,7 +516,7 @@ TEST(Serve, ASilentFirmwareTimesOut) {
   auto result = serve_against(
       loopback,
       [](Peer& firmware) {
-        EXPECT_TRUE(firmware.channel().send_hello({}).ok());
+        EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
         EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
         EXPECT_EQ(firmware.expect_frame(), FrameKind::error);  // the plant gives up and says so
       },
@@ -398,7 +528,7 @@ TEST(Serve, ASilentFirmwareTimesOut) {
 TEST(Serve, TheEndOfTheStreamBetweenFramesEndsTheSessionWell) {
   plant::Loopback loopback;
   auto result = serve_against(loopback, [](Peer& firmware) {
-    EXPECT_TRUE(firmware.channel().send_hello({}).ok());
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
     EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
     const double value = 3;
     EXPECT_TRUE(firmware.channel().send_write("gpio:LED1", {&value, 1}).ok());

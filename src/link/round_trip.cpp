@@ -63,7 +63,8 @@ int main(int argc, char** argv) {
   std::optional<duet::Result<duet::link::ServeSummary>> served;
   std::thread plant_side{[&] { served.emplace(duet::link::serve(echo, *plant_end)); }};
 
-  auto connected = duet::link::RemotePlant::connect(std::move(pair.value().first), {});
+  auto connected =
+      duet::link::RemotePlant::connect(std::move(pair.value().first), {duet::link::LinkMode::lock_step, 1'000'000});
   if (!connected) {
     std::fprintf(stderr, "link_round_trip: %s\n", connected.error().c_str());
     plant_side.join();

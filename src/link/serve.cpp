@@ -1,15 +1,30 @@
 #include "duet/link/serve.hpp"
 
-#include <cmath>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "duet/blocks/convert.hpp"
 #include "duet/link/channel.hpp"
 #include "duet/link/pacer.hpp"
 
 namespace duet::link {
 namespace {
+
+// Calls `run` with a value of the C++ type of `type` (bool, std::uint8_t, ..., double), for a template to take.
+template <typename Run>
+auto with_element_type(ElementType type, Run&& run) {
+  switch (type) {
+    case ElementType::boolean: return run(bool{});
+    case ElementType::u8: return run(std::uint8_t{});
+    case ElementType::u16: return run(std::uint16_t{});
+    case ElementType::u32: return run(std::uint32_t{});
+    case ElementType::f32: return run(float{});
+    case ElementType::f64: break;
+  }
+  return run(double{});
+}
 
 // One firmware's session: a handler per kind of frame the firmware may send.
 class Server {
@@ -53,51 +68,65 @@ class Server {
     }
     if (summary_.hello.version != protocol_version) {
       return channel_.fail("the firmware speaks link protocol version " + std::to_string(summary_.hello.version) +
-                           "; this plant speaks " + std::to_string(protocol_version));
+                           "; this plant speaks version " + std::to_string(protocol_version) + " only");
+    }
+    if (summary_.hello.base_period_ns == 0) {
+      return channel_.fail("the firmware's HELLO gives a base period of 0 ns: the plant's time is tick x base period");
     }
     if (Status answered = channel_.send_hello_ok({protocol_version}); !answered) return answered;
     return channel_.flush();
   }
 
+  // The plant takes doubles: each element becomes one as the interpreter converts it (duet::blocks::convert), so that
+  // the plant sees the numbers `duet sim` gives it.
   Status on_write(std::span<const std::uint8_t> payload) {
     Write write;
     if (const FrameError error = parse(payload, write); error != FrameError::none) {
       return channel_.fail("the firmware sent a bad WRITE (" + std::string{describe(error)} + ")");
     }
     values_.resize(write.values.size());
-    write.values.copy_to(values_);
+    with_element_type(write.values.type(), [&]<typename T>(T) {
+      for (std::size_t k = 0; k < values_.size(); ++k) values_[k] = blocks::convert<double>(write.values.at<T>(k));
+    });
     ++summary_.writes;
     plant_.write(write.resource, values_);
     return done();
   }
 
+  // The plant answers in doubles, which go back in the type the firmware asked for, converted as the interpreter
+  // converts them: saturated, NaN to 0, rounded to nearest for f32.
   Status on_read(std::span<const std::uint8_t> payload) {
     Read read;
     if (const FrameError error = parse(payload, read); error != FrameError::none) {
       return channel_.fail("the firmware sent a bad READ (" + std::string{describe(error)} + ")");
     }
-    if (read.count > max_read_values) {
-      return channel_.fail("the firmware asked for " + std::to_string(read.count) + " values of '" +
-                           std::string{read.resource} + "'; a VALUES frame holds at most " +
-                           std::to_string(max_read_values));
+    if (read.count > max_read_count(read.type)) {
+      return channel_.fail("the firmware asked for " + std::to_string(read.count) + " " +
+                           std::string{element_type_name(read.type)} + " values of '" + std::string{read.resource} +
+                           "'; a VALUES frame holds at most " + std::to_string(max_read_count(read.type)));
     }
     values_.assign(read.count, 0.0);
     ++summary_.reads;
     plant_.read(read.resource, values_);
-    return channel_.send_values(values_);
+    return with_element_type(read.type, [&]<typename T>(T) {
+      // std::vector<bool> holds no span: a plain array of the type instead.
+      const std::unique_ptr<T[]> converted{new T[values_.size()]};
+      for (std::size_t k = 0; k < values_.size(); ++k) converted[k] = blocks::convert<T>(values_[k]);
+      return channel_.send_values(std::span<const T>{converted.get(), values_.size()});
+    });
   }
 
   Status on_tick(std::span<const std::uint8_t> payload) {
     Tick tick;
     (void)parse(payload, tick);  // the decoder checked its one field's length
-    if (!std::isfinite(tick.time_s)) return channel_.fail("the firmware sent a TICK whose time is not a number");
+    const double time_s = tick_time_s(tick.tick, summary_.hello.base_period_ns);
     ++summary_.ticks;
-    summary_.last_tick_s = tick.time_s;
+    summary_.last_tick_s = time_s;
     if (options_.paced) {
-      pacer_.wait_until(tick.time_s);
+      pacer_.wait_until(time_s);
       summary_.pacing = pacer_.report();
     }
-    plant_.advance(tick.time_s, raise_);
+    plant_.advance(time_s, raise_);
     if (failure_) return *failure_;
     return channel_.send_empty(FrameKind::tick_done);
   }

@@ -22,9 +22,9 @@ struct Session {
   Clock::duration took{};
 };
 
-// `ticks` TICKs at `period_s` from a lock-step firmware (it never waits by itself), against a plant served with
+// `ticks` TICKs at `period_ns` from a lock-step firmware (it never waits by itself), against a plant served with
 // `options`, `pause` before each TICK but the first.
-Session run_session(const ServeOptions& options, int ticks, double period_s, Clock::duration pause = {}) {
+Session run_session(const ServeOptions& options, int ticks, std::uint32_t period_ns, Clock::duration pause = {}) {
   auto pair = socket_pair(2s);
   EXPECT_TRUE(pair.ok()) << (pair.ok() ? "" : pair.error());
   plant::Loopback loopback;
@@ -32,11 +32,11 @@ Session run_session(const ServeOptions& options, int ticks, double period_s, Clo
   std::thread plant_side{[&] { served.emplace(serve(loopback, *pair.value().second, options)); }};
   const Clock::time_point start = Clock::now();
   {
-    auto connected = RemotePlant::connect(std::move(pair.value().first), {LinkMode::lock_step, period_s});
+    auto connected = RemotePlant::connect(std::move(pair.value().first), {LinkMode::lock_step, period_ns});
     EXPECT_TRUE(connected.ok()) << (connected.ok() ? "" : connected.error());
     for (int tick = 0; connected.ok() && tick < ticks; ++tick) {
       if (tick > 0) std::this_thread::sleep_for(pause);
-      connected.value()->advance(tick * period_s, {});
+      connected.value()->advance(tick_time_s(static_cast<std::uint64_t>(tick), period_ns), {});
     }
     EXPECT_TRUE(connected.ok() && connected.value()->ok());
   }  // BYE
@@ -45,7 +45,7 @@ Session run_session(const ServeOptions& options, int ticks, double period_s, Clo
 }
 
 TEST(ServePacing, APacedSessionTakesItsTicksInWallTime) {
-  const Session paced = run_session({.paced = true}, 51, 0.004);  // 50 periods after the first tick
+  const Session paced = run_session({.paced = true}, 51, 4'000'000);  // 50 periods after the first tick
   ASSERT_TRUE(paced.summary.ok()) << paced.summary.error();
   EXPECT_EQ(paced.summary.value().ticks, 51U);
   EXPECT_EQ(paced.summary.value().last_tick_s, 50 * 0.004);
@@ -54,7 +54,7 @@ TEST(ServePacing, APacedSessionTakesItsTicksInWallTime) {
 }
 
 TEST(ServePacing, AnUnpacedSessionDoesNotWait) {
-  const Session unpaced = run_session({}, 51, 0.004);
+  const Session unpaced = run_session({}, 51, 4'000'000);
   ASSERT_TRUE(unpaced.summary.ok()) << unpaced.summary.error();
   EXPECT_EQ(unpaced.summary.value().ticks, 51U);
   EXPECT_LT(unpaced.took, 150ms);                                    // the 200 ms the ticks stand for, not waited
@@ -63,7 +63,7 @@ TEST(ServePacing, AnUnpacedSessionDoesNotWait) {
 
 TEST(ServePacing, ATickThatComesAfterItsTimeIsLate) {
   // 1 ms ticks with 30 ms between them: every TICK after the first is late by some 29 ms more than the one before.
-  const Session late = run_session({.paced = true}, 4, 0.001, 30ms);
+  const Session late = run_session({.paced = true}, 4, 1'000'000, 30ms);
   ASSERT_TRUE(late.summary.ok()) << late.summary.error();
   EXPECT_EQ(late.summary.value().pacing.first_second.ticks, 4U);
   EXPECT_EQ(late.summary.value().pacing.first_second.late, 3U);

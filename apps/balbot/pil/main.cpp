@@ -51,7 +51,6 @@ RobotPort port;
 rt::Executive<RobotPort, task_capacity> executive{model, port};
 board::PlantLink link;
 StatusReport report{model};
-double base_period_s = 0.0;
 
 // The task each plant interrupt line runs (its index in the task table); lines without one run nothing.
 constexpr std::uint8_t no_task = 0xFF;
@@ -121,7 +120,7 @@ extern "C" void TIMER0_IRQHandler() {
   balbot::pil::host_channels_new_tick();
   if (executive.state() == duet::rt::ExecutiveState::running) {
     // duet sim's order: the plant moves to the tick's time (its interrupts run their tasks), then the tick's steps.
-    balbot::pil::link.tick(static_cast<double>(executive.ticks()) * balbot::pil::base_period_s);
+    balbot::pil::link.tick(executive.ticks());
     if (!balbot::pil::link.ok()) executive.request_stop(duet::rt::StopReason::external);
   }
   executive.on_base_tick();
@@ -142,7 +141,6 @@ int main() {
   const CommandLine arguments = parse_command_line(cortex_m::semihosting::command_line(command_line_buffer));
   if (!arguments.problem.view().empty()) fail(arguments.problem.view(), 2);
   // As duet sim counts them: ticks 0 to duration / period, so the model stops after the one past the last.
-  base_period_s = model.base_period_ns * 1e-9;
   if (arguments.duration_ms != 0) model.final_tick = arguments.duration_ms * 1'000'000ULL / model.base_period_ns + 1U;
 
   duet::TextBuffer<200> problem;

@@ -65,11 +65,17 @@ consteval std::uint16_t interrupt_number(std::string_view name) {
   return static_cast<std::uint16_t>(detail::no_such_pin_on_mps2_an386().mask);
 }
 
-// The plant's resources by the plant's names, as doubles: what an image with a plant link defines (apps/balbot/pil).
-// An image without one that reaches them halts with a message saying so. The typed calls for PWM, capture, SPI, ADC
-// and EXTI come to these (duet/hardware/by_plant_name.hpp).
-void write(std::string_view resource, std::span<const double> values);
-void read(std::string_view resource, std::span<double> values);
+// The plant's resources by the plant's names, each in the type its typed call below moves: what an image with a plant
+// link defines (apps/balbot/pil: PlantLink's WRITE and READ). An image without one that reaches them halts with a
+// message saying so (no_plant.cpp).
+void plant_write(std::string_view resource, std::span<const bool> levels);
+void plant_write(std::string_view resource, std::span<const std::uint8_t> bytes);
+void plant_write(std::string_view resource, std::span<const std::uint16_t> counts);
+void plant_write(std::string_view resource, std::span<const float> values);
+void plant_read(std::string_view resource, std::span<bool> levels);
+void plant_read(std::string_view resource, std::span<std::uint8_t> bytes);
+void plant_read(std::string_view resource, std::span<std::uint16_t> samples);
+void plant_read(std::string_view resource, std::span<std::uint32_t> counts);
 
 namespace detail {
 template <auto resource>
@@ -94,20 +100,57 @@ inline void gpio_write(const Pin& pin, bool level) {
     leds = level ? (leds | pin.mask) : (leds & ~pin.mask);
     return;
   }
-  const double value = level ? 1.0 : 0.0;
-  write(pin.resource_name(), {&value, 1});
+  plant_write(pin.resource_name(), std::span<const bool>{&level, 1});
 }
 
 inline bool gpio_read(const Pin& pin) {
   if (pin.mask != 0) return (cortex_m::register32(mps2_an386::leds_register) & pin.mask) != 0;
-  double value = 0.0;
-  read(pin.resource_name(), {&value, 1});
-  return value != 0.0;
+  bool level = false;
+  plant_read(pin.resource_name(), std::span<bool>{&level, 1});
+  return level;
+}
+
+// The typed calls, by the plant's names for the resources (resources.hpp).
+template <PwmChannel channel>
+void pwm_write(float percent) {
+  plant_write(plant_name(channel).view(), std::span<const float>{&percent, 1});
+}
+
+// The plant gives a capture as [count, rising (1 or 0)]: both read as u32, the edge true when not 0 (the same as the
+// interpreter's conversion of the plant's 1 or 0 to bool).
+template <CaptureChannel channel>
+CaptureReading capture_read() {
+  std::uint32_t values[2]{};
+  plant_read(plant_name(channel).view(), std::span<std::uint32_t>{values});
+  return {values[0], values[1] != 0};
+}
+
+template <SpiBus bus>
+void spi_transfer(std::span<const std::uint8_t> bytes) {
+  plant_write(plant_name(bus).view(), bytes);
+}
+template <SpiBus bus>
+void spi_received(std::span<std::uint8_t> bytes) {
+  plant_read(plant_name(bus).view(), bytes);
+}
+
+template <AdcInput input>
+void adc_start(std::uint16_t count) {
+  plant_write(plant_name(input).view(), std::span<const std::uint16_t>{&count, 1});
+}
+template <AdcInput input>
+void adc_samples(std::span<std::uint16_t> samples) {
+  plant_read(plant_name(input).view(), samples);
+}
+
+template <ExtiLine line>
+bool exti_level() {
+  bool level = false;
+  plant_read(plant_name(line).view(), std::span<bool>{&level, 1});
+  return level;
 }
 
 }  // namespace duet::hardware
-
-#include "duet/hardware/by_plant_name.hpp"
 
 // The image's routes, if it has any.
 #if __has_include("duet/hardware/board_routes.hpp")

@@ -39,13 +39,19 @@ class PlantLink {
   // session: HELLO (lock-step, the model's base period) and the plant's HELLO_OK.
   bool connect(std::string_view to_plant, std::string_view from_plant, std::uint32_t base_period_ns);
 
-  void write(std::string_view resource, std::span<const double> values);
-  void read(std::string_view resource, std::span<double> values);
+  // The elements go in their own types (WRITE, READ and VALUES of bool, u8, u16, u32 or f32 elements): nothing on the
+  // firmware's side converts to or from double, which the M4F's FPU does not have. The plant converts as the
+  // interpreter does. Defined for the types hardware.hpp's calls move.
+  template <typename Element>
+  void write(std::string_view resource, std::span<const Element> values);
+  template <typename Element>
+  void read(std::string_view resource, std::span<Element> values);
 
-  // Moves the plant to `time_s`. Each interrupt it raises on the way pends that interrupt's line
-  // (board.hpp's plant_interrupts) and lets it run, with time running, before the plant goes on: the task must be
-  // more urgent than the caller (the base tick's handler).
-  void tick(double time_s);
+  // Moves the plant to base tick `tick` (its time is the plant's to compute: tick x the base period HELLO gave).
+  // Each interrupt it raises on the way pends that interrupt's line (board.hpp's plant_interrupts) and lets it run,
+  // with time running, before the plant goes on: the task must be more urgent than the caller (the base tick's
+  // handler).
+  void tick(std::uint64_t tick);
 
   // Ends the session.
   void bye();
@@ -57,7 +63,7 @@ class PlantLink {
   [[nodiscard]] std::string_view error() const { return error_.view(); }
 
  private:
-  // The largest frame the plant sends to this firmware: VALUES of 127 doubles; a longer one is refused.
+  // The largest frame the plant sends to this firmware: VALUES of 255 u32 elements; a longer one is refused.
   static constexpr std::size_t max_received_payload = 1024;
 
   // Frames waiting to go out: a tick's WRITEs (some 11 for the robot, 30 bytes each) and the frame that waits.

@@ -2,7 +2,8 @@
 // The typed hardware calls (duet/hardware/hardware.hpp) for a port whose resources are a simulated plant's: each goes
 // to the plant by the plant's name for it, as doubles, converted as the interpreter converts them
 // (duet::blocks::convert), so that generated code and `duet sim` give the plant the same numbers and take the same
-// back. The PC's port and the plant link on QEMU include it, after declaring the two calls it comes to:
+// back. The PC's port includes it (QEMU's plant link carries the types themselves), after declaring the two calls
+// it comes to:
 //
 //   void write(std::string_view resource, std::span<const double> values);
 //   void read(std::string_view resource, std::span<double> values);

@@ -18,6 +18,13 @@
 
 namespace duet::link {
 
+// The plant's time at a tick, as a double: tick x base period, with the arithmetic of duet sim's robot (sil_run.cpp)
+// and of the firmware before version 2 of the protocol, so that a run through the link is the run in one process bit
+// for bit (tick 9 at 1 ms is 0.009000000000000001, which 9,000,000 ns would bring back as 0.009).
+[[nodiscard]] inline double tick_time_s(std::uint64_t tick, std::uint32_t base_period_ns) {
+  return static_cast<double>(tick) * (base_period_ns * 1e-9);
+}
+
 struct ReceivedFrame {
   FrameKind kind;
   std::span<const std::uint8_t> payload;  // valid until the channel's next receive()
@@ -32,9 +39,12 @@ class Channel {
   Status send_hello(const Hello& hello);
   Status send_hello_ok(const HelloOk& hello_ok);
   Status send_write(std::string_view resource, std::span<const double> values);
-  Status send_read(std::string_view resource, std::size_t count);
-  Status send_values(std::span<const double> values);
-  Status send_tick(double time_s);
+  Status send_read(std::string_view resource, ElementType type, std::size_t count);
+  // For each element type of the protocol (bool, u8, u16, u32, float, double). Precondition: they fit a frame (a READ
+  // asks for at most max_read_count).
+  template <typename T>
+  Status send_values(std::span<const T> values);
+  Status send_tick(std::uint64_t tick);
   Status send_interrupt(std::string_view name);
   Status send_empty(FrameKind kind);  // INTERRUPT_DONE, TICK_DONE, BYE
   // Sends what is gathered.

@@ -1,10 +1,10 @@
 #pragma once
 // A plant in another process that looks exactly like one in this process: the firmware's side of the link
-// (docs/LINK.md). write() and read() travel as WRITE and READ frames (a read waits for its VALUES); advance() sends
-// TICK and serves what the plant sends back until TICK_DONE: for each INTERRUPT it calls raise(name), which runs the
-// firmware's interrupt task there and then (its own writes and reads go over the link in the middle of the tick),
-// and answers INTERRUPT_DONE. In lock-step a run through a RemotePlant is the run against the same plant in this
-// process, bit for bit.
+// (docs/LINK.md). write() and read() travel as WRITE and READ frames of f64 elements (a read waits for its VALUES);
+// advance(t) sends TICK with the number of the tick whose time t is (tick_time_s), and serves what the plant sends back
+// until TICK_DONE: for each INTERRUPT it calls raise(name), which runs the firmware's interrupt task there and then
+// (its own writes and reads go over the link in the middle of the tick), and answers INTERRUPT_DONE. In lock-step a run
+// through a RemotePlant is the run against the same plant in this process, bit for bit.
 //
 // The Plant interface has no way to fail, so the first failure (the plant gone, silent, or saying ERROR; a frame
 // that makes no sense) is kept: from then on every call does nothing (reads give zeros), and ok() and error() say
@@ -29,8 +29,8 @@ namespace duet::link {
 
 struct RemotePlantOptions {
   LinkMode mode = LinkMode::lock_step;
-  // The firmware's base period, told to the plant in HELLO (it may log it; the plant's time comes from TICKs).
-  double base_period_s = 0;
+  // The firmware's base period, told to the plant in HELLO: the plant's time is a TICK's number times it. Not 0.
+  std::uint32_t base_period_ns = 0;
 };
 
 class RemotePlant : public plant::Plant {
@@ -41,6 +41,8 @@ class RemotePlant : public plant::Plant {
   // Says BYE, unless the link failed or close() was called.
   ~RemotePlant() override;
 
+  // `time_s` must be a tick's time as tick_time_s computes it (what the executive's base ticks give); another
+  // time fails the link, since a TICK carries only the tick's number.
   void advance(double time_s, const plant::RaiseInterrupt& raise) override;
   void write(std::string_view resource, std::span<const double> values) override;
   void read(std::string_view resource, std::span<double> values) override;
