@@ -48,44 +48,59 @@ class PacketWriter {
 };
 
 template <typename T>
-double read_as_double(const void* address) {
+bool clamp_as(std::uint8_t* bytes, const TypedLimit& lowest, const TypedLimit& highest) {
   T value;
-  std::memcpy(&value, address, sizeof(T));
-  return static_cast<double>(value);
+  T low;
+  T high;
+  std::memcpy(&value, bytes, sizeof(T));
+  std::memcpy(&low, lowest.bytes, sizeof(T));
+  std::memcpy(&high, highest.bytes, sizeof(T));
+  if (value >= low && value <= high) return false;  // NaN is neither
+  const T limit = value > high ? high : low;
+  std::memcpy(bytes, &limit, sizeof(T));
+  return true;
 }
 
-double to_double(ValueType type, const void* address) {
+// A double's place in the order of doubles, as an unsigned integer: the Cortex-M4 compares doubles only in software
+// (libgcc), which an interrupt handler must not reach; the bits of two doubles that are not NaN compare as their
+// values once negative ones are reversed. -0 is +0.
+std::uint64_t order_of(std::uint64_t bits) {
+  constexpr std::uint64_t sign = std::uint64_t{1} << 63;
+  if ((bits & ~sign) == 0) return sign;  // either zero
+  return (bits & sign) != 0 ? ~bits : bits | sign;
+}
+bool is_nan(std::uint64_t bits) {
+  constexpr std::uint64_t exponent = 0x7FF0'0000'0000'0000U;
+  return (bits & exponent) == exponent && (bits & ~(exponent | std::uint64_t{1} << 63)) != 0;
+}
+
+template <>
+bool clamp_as<double>(std::uint8_t* bytes, const TypedLimit& lowest, const TypedLimit& highest) {
+  std::uint64_t value;
+  std::uint64_t low;
+  std::uint64_t high;
+  std::memcpy(&value, bytes, sizeof value);
+  std::memcpy(&low, lowest.bytes, sizeof low);
+  std::memcpy(&high, highest.bytes, sizeof high);
+  if (!is_nan(value) && order_of(value) >= order_of(low) && order_of(value) <= order_of(high)) return false;
+  const std::uint64_t limit = !is_nan(value) && order_of(value) > order_of(high) ? high : low;
+  std::memcpy(bytes, &limit, sizeof limit);
+  return true;
+}
+
+// Brings `bytes`, a value of `type`, within the limits (a NaN to the lower one); true if it had to.
+bool clamp(ValueType type, std::uint8_t* bytes, const TypedLimit& lowest, const TypedLimit& highest) {
   switch (type) {
-    case ValueType::u8: return read_as_double<std::uint8_t>(address);
-    case ValueType::i8: return read_as_double<std::int8_t>(address);
-    case ValueType::u16: return read_as_double<std::uint16_t>(address);
-    case ValueType::i16: return read_as_double<std::int16_t>(address);
-    case ValueType::u32: return read_as_double<std::uint32_t>(address);
-    case ValueType::i32: return read_as_double<std::int32_t>(address);
-    case ValueType::f32: return read_as_double<float>(address);
-    case ValueType::f64: return read_as_double<double>(address);
+    case ValueType::u8: return clamp_as<std::uint8_t>(bytes, lowest, highest);
+    case ValueType::i8: return clamp_as<std::int8_t>(bytes, lowest, highest);
+    case ValueType::u16: return clamp_as<std::uint16_t>(bytes, lowest, highest);
+    case ValueType::i16: return clamp_as<std::int16_t>(bytes, lowest, highest);
+    case ValueType::u32: return clamp_as<std::uint32_t>(bytes, lowest, highest);
+    case ValueType::i32: return clamp_as<std::int32_t>(bytes, lowest, highest);
+    case ValueType::f32: return clamp_as<float>(bytes, lowest, highest);
+    case ValueType::f64: return clamp_as<double>(bytes, lowest, highest);
   }
-  return 0;
-}
-
-template <typename T>
-void write_from_double(double value, std::uint8_t* bytes) {
-  const T converted = static_cast<T>(value);
-  std::memcpy(bytes, &converted, sizeof(T));
-}
-
-// `value`, already within the item's limits, in the item's type.
-void from_double(ValueType type, double value, std::uint8_t* bytes) {
-  switch (type) {
-    case ValueType::u8: write_from_double<std::uint8_t>(value, bytes); break;
-    case ValueType::i8: write_from_double<std::int8_t>(value, bytes); break;
-    case ValueType::u16: write_from_double<std::uint16_t>(value, bytes); break;
-    case ValueType::i16: write_from_double<std::int16_t>(value, bytes); break;
-    case ValueType::u32: write_from_double<std::uint32_t>(value, bytes); break;
-    case ValueType::i32: write_from_double<std::int32_t>(value, bytes); break;
-    case ValueType::f32: write_from_double<float>(value, bytes); break;
-    case ValueType::f64: write_from_double<double>(value, bytes); break;
-  }
+  return false;
 }
 
 }  // namespace
@@ -161,14 +176,11 @@ void Endpoint::set(std::span<const std::uint8_t> request) {
     answer(index, ParameterStatus::malformed);
     return;
   }
-  const double asked = to_double(parameter.type, value.data());
-  ParameterStatus status = ParameterStatus::applied;
   std::uint8_t applied[8];
   std::memcpy(applied, value.data(), value.size());
-  if (!(asked >= parameter.minimum && asked <= parameter.maximum)) {  // NaN too
-    from_double(parameter.type, asked > parameter.maximum ? parameter.maximum : parameter.minimum, applied);
-    status = ParameterStatus::clamped;
-  }
+  const ParameterStatus status = clamp(parameter.type, applied, parameter.lowest, parameter.highest)
+                                     ? ParameterStatus::clamped
+                                     : ParameterStatus::applied;
   // Under the lock, so that a task reading a multi-word parameter never sees half of the old and half of the new.
   const std::uint32_t saved = lock_.lock != nullptr ? lock_.lock() : 0;
   std::memcpy(parameter.address, applied, value.size());

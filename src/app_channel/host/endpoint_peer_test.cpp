@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "duet/app_channel/endpoint.hpp"
@@ -204,6 +206,61 @@ TEST_F(AppChannel, TheFirmwareClampsAndRejectsOnItsOwn) {
   EXPECT_EQ(reports[2].status, ParameterStatus::malformed);
   EXPECT_EQ(reports[3].status, ParameterStatus::unknown_parameter);
   EXPECT_FLOAT_EQ(robot.p, 1.0F);
+}
+
+// The firmware checks a value against its limits in the value's own type (a double by the order of its bits, so that
+// the Cortex-M4 needs no software double): every type, negative limits, an integer's fractional limits (rounded
+// inward), -0 and NaN.
+TEST(AppChannelLimits, EachTypeIsCheckedInItsOwnType) {
+  struct Values {
+    double wide = 0;
+    float narrow = 0;
+    std::int16_t count = 0;
+    std::uint8_t level = 0;
+  } values;
+  const std::array<Item, 0> telemetry{};
+  const std::array<Item, 4> parameters{
+      item("wide", "", values.wide, -2.5, -0.5), item("narrow", "", values.narrow, -1, 1),
+      item("count", "", values.count, -3.5, 2.5), item("level", "", values.level, 0.5, 1000)};
+  const Application application{"limits", 1000, telemetry, parameters};
+  FirmwareEnd firmware{application};
+  std::vector<ParameterReport> reports;
+  Peer peer{{.parameter = [&reports](const ParameterReport& report) { reports.push_back(report); }}};
+  const auto set = [&](std::uint8_t index, auto value) {
+    std::vector<std::uint8_t> packet{0x82, index};
+    const auto bytes = std::bit_cast<std::array<std::uint8_t, sizeof value>>(value);
+    packet.insert(packet.end(), bytes.begin(), bytes.end());
+    std::vector<std::uint8_t> frame(framing.frame_size(packet.size()));
+    frame.resize(xcp::write_frame(framing, frame, 0, packet));
+    firmware.endpoint.receive(frame);
+    std::array<std::uint8_t, 64> line{};
+    while (const std::size_t sent = firmware.endpoint.transmit(line)) peer.receive(std::span{line}.first(sent));
+    return reports.back().status;
+  };
+  EXPECT_EQ(set(0, -1.0), ParameterStatus::applied);
+  EXPECT_EQ(values.wide, -1.0);
+  EXPECT_EQ(set(0, -0.4), ParameterStatus::clamped);  // above -0.5: the bits of negative doubles order reversed
+  EXPECT_EQ(values.wide, -0.5);
+  EXPECT_EQ(set(0, -3.0), ParameterStatus::clamped);
+  EXPECT_EQ(values.wide, -2.5);
+  EXPECT_EQ(set(0, 1e300), ParameterStatus::clamped);
+  EXPECT_EQ(values.wide, -0.5);
+  EXPECT_EQ(set(0, std::numeric_limits<double>::quiet_NaN()), ParameterStatus::clamped);
+  EXPECT_EQ(values.wide, -2.5);  // NaN to the lower limit
+  EXPECT_EQ(set(1, -0.0F), ParameterStatus::applied);
+  EXPECT_EQ(set(1, 1.5F), ParameterStatus::clamped);
+  EXPECT_EQ(values.narrow, 1.0F);
+  EXPECT_EQ(set(1, -std::numeric_limits<float>::infinity()), ParameterStatus::clamped);
+  EXPECT_EQ(values.narrow, -1.0F);
+  EXPECT_EQ(set(2, std::int16_t{-3}), ParameterStatus::applied);
+  EXPECT_EQ(set(2, std::int16_t{-4}), ParameterStatus::clamped);  // -3.5 rounds in to -3
+  EXPECT_EQ(values.count, -3);
+  EXPECT_EQ(set(2, std::int16_t{3}), ParameterStatus::clamped);  // 2.5 rounds in to 2
+  EXPECT_EQ(values.count, 2);
+  EXPECT_EQ(set(3, std::uint8_t{0}), ParameterStatus::clamped);  // 0.5 rounds in to 1
+  EXPECT_EQ(values.level, 1);
+  EXPECT_EQ(set(3, std::uint8_t{255}), ParameterStatus::applied);  // 1000 saturates at the type's 255
+  EXPECT_EQ(values.level, 255);
 }
 
 TEST_F(AppChannel, ADescribeRequestRepeatsTheDescription) {

@@ -4,11 +4,15 @@
 // owns, no heap; publish() may be called from an interrupt, receive() from the receive interrupt or the background
 // loop, transmit() from whoever feeds the line.
 
+#include <array>
 #include <atomic>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string_view>
+#include <type_traits>
 
 #include "duet/app_channel/protocol.hpp"
 #include "duet/xcp/framing.hpp"
@@ -17,27 +21,75 @@
 
 namespace duet::app_channel {
 
+// A limit in the item's own type, as its bytes: set() compares in that type, so that the Cortex-M4 checks a float
+// parameter with its FPU rather than with libgcc's software doubles. An integer's lower limit rounds up and its upper
+// limit down (its values within them are those within the doubles); both saturate at the type's range.
+struct TypedLimit {
+  std::uint8_t bytes[8]{};
+};
+
+namespace detail {
+template <typename T>
+constexpr TypedLimit typed_limit(double limit, bool upper) {
+  T value{};
+  if constexpr (std::is_floating_point_v<T>) {
+    value = static_cast<T>(limit);
+  } else if (!(limit > static_cast<double>(std::numeric_limits<T>::lowest()))) {  // NaN: the lowest too
+    value = std::numeric_limits<T>::lowest();
+  } else if (!(limit < static_cast<double>(std::numeric_limits<T>::max()))) {
+    value = std::numeric_limits<T>::max();
+  } else {
+    value = static_cast<T>(limit);  // toward zero
+    if (!upper && static_cast<double>(value) < limit) ++value;
+    if (upper && static_cast<double>(value) > limit) --value;
+  }
+  TypedLimit typed;
+  const auto bytes = std::bit_cast<std::array<std::uint8_t, sizeof(T)>>(value);
+  for (std::size_t k = 0; k < sizeof(T); ++k) typed.bytes[k] = bytes[k];
+  return typed;
+}
+}  // namespace detail
+
 // One value the application sends or accepts, and where it lives.
 struct Item {
   const char* name;
   const char* unit;
   ValueType type;
-  double minimum;
+  double minimum;  // as the description tells Linux
   double maximum;
   void* address;
   // Value k's name (a state, a choice), at most max_labels of at most max_label_length bytes; none: a number.
   std::span<const char* const> labels{};
+  TypedLimit lowest{};  // minimum and maximum in the item's type, for set()
+  TypedLimit highest{};
 };
 
 template <typename T>
 constexpr Item item(const char* name, const char* unit, T& variable, double minimum, double maximum) {
-  return {name, unit, value_type_of<T>(), minimum, maximum, &variable};
+  return {name,
+          unit,
+          value_type_of<T>(),
+          minimum,
+          maximum,
+          &variable,
+          {},
+          detail::typed_limit<T>(minimum, false),
+          detail::typed_limit<T>(maximum, true)};
 }
 
 // An integer item whose values 0, 1, ... are named: its limits are the first and the last name.
 template <typename T>
 constexpr Item named_item(const char* name, T& variable, std::span<const char* const> labels) {
-  return {name, "", value_type_of<T>(), 0, static_cast<double>(labels.size()) - 1, &variable, labels};
+  const double last = static_cast<double>(labels.size()) - 1;
+  return {name,
+          "",
+          value_type_of<T>(),
+          0,
+          last,
+          &variable,
+          labels,
+          detail::typed_limit<T>(0, false),
+          detail::typed_limit<T>(last, true)};
 }
 
 struct Application {
