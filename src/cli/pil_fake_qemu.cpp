@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
     return exit_code;
   }
   if (said("garbage", "0") == "1") {
-    const std::vector<std::uint8_t> hello{0x01, 6, 0, 1, 0, 0x40, 0x42, 0x0F, 0x00};
+    const std::vector<std::uint8_t> hello{0x01, 6, 0, 2, 0, 0x40, 0x42, 0x0F, 0x00};
     const std::vector<std::uint8_t> nonsense{0x42, 0, 0};
     (void)stream->write_all(hello);
     (void)stream->write_all(nonsense);

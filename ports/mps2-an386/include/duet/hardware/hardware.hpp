@@ -2,7 +2,8 @@
 // The hardware interface generated code calls (docs/MODELS.md, "Hardware blocks"), on QEMU's mps2-an386. The board's
 // user LEDs LED0..LED7 are pins of its own (bits of the LED register). Everything else a model names is the simulated
 // plant's, reached over the virtual-hardware link (duet/mps2_an386/plant_link.hpp, docs/LINK.md): other pins by
-// name ("gpio:PA12"), the resources ("pwm:TIM1/3", "spi:SPI5", ...) through read() and write(), and the plant's
+// name ("gpio:PA12"), the resources ("pwm:TIM1/3", "spi:SPI5", ...) through plant_read() and plant_write() in their
+// own types (bytes, counts, a float duty: no double on the firmware's side), and the plant's
 // interrupts ("EXTI8", "TIM1", ...) on lines of the board that are wired to nothing. Each port has a header of this
 // name; CMake chooses which one a build sees.
 
