@@ -232,8 +232,9 @@ std::string everything(int fd) {
   return text;
 }
 
+// The stop may cut the firmware's console in the middle of a line: that is no malformed report.
 TEST(PilCommand, CtrlCEndsAHealthyRunInOrder) {
-  const TemporaryFile firmware{"image.elf", ""};
+  const TemporaryFile firmware{"image.elf", "cut_line=1\n"};
   const TemporaryFile console{"signal_console.txt", ""};
   ChildProcess duet = start_duet({"pil", firmware.path(), "--qemu", DUET_FAKE_QEMU, "--bridge", DUET_BRIDGE_PROGRAM,
                                   "--xcp", "127.0.0.1:0", "--websocket", "127.0.0.1:0", "--console", console.path()});
@@ -248,6 +249,8 @@ TEST(PilCommand, CtrlCEndsAHealthyRunInOrder) {
   EXPECT_FALSE(contains(out, "  link      0 ticks")) << out;
   EXPECT_TRUE(contains(out, "  xcp       0 frames to the slave")) << out;
   EXPECT_EQ(everything(duet.errors_fd()), "");
+  EXPECT_TRUE(contains(read_text_file(console.path()).value(), "duet-task i\n"))
+      << read_text_file(console.path()).value();
   EXPECT_TRUE(gone(qemu));
 }
 

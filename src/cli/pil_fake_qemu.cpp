@@ -6,6 +6,7 @@
 //   connect=0     end at once without connecting to the plant
 //   garbage=1     send a frame of no known kind after HELLO
 //   hang=1        connect, then say nothing and wait for a signal (what ends it must come from outside)
+//   cut_line=1    leave half a console line unfinished, as the real firmware does when a signal stops it mid-line
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -107,6 +108,8 @@ int main(int argc, char** argv) {
     return 1;
   }
   const auto last_tick = static_cast<std::uint64_t>(setup.duration_s * 1000 + 0.5);
+  const bool cut_line = said("cut_line", "0") == "1";
+  if (cut_line) std::cout << "duet-task i" << std::flush;  // and no more reports, which would run on from it
   std::uint64_t tick = 1;
   for (; setup.duration_s < 0 || tick <= last_tick; ++tick) {
     plant.value()->advance(static_cast<double>(tick) * 0.001, [](std::string_view) {});
@@ -114,7 +117,7 @@ int main(int argc, char** argv) {
       std::cout << "error: the plant link failed: " << plant.value()->error() << std::endl;
       return 2;
     }
-    if (tick % 100 == 0) report(tick);
+    if (tick % 100 == 0 && !cut_line) report(tick);
   }
   (void)plant.value()->close();
   std::cout << "duet-end reason=final_tick ticks=" << tick - 1 << " overruns=0" << std::endl;

@@ -44,7 +44,10 @@ class LineSplitter {
       const ssize_t got = ::read(fd, bytes, sizeof bytes);
       if (got <= 0) {
         if (got == 0) ended_ = true;
-        if (got == 0 && !pending_.empty()) lines.push_back(std::exchange(pending_, {}));
+        if (got == 0 && !pending_.empty()) {
+          lines.push_back(std::exchange(pending_, {}));
+          ended_mid_line_ = true;
+        }
         return lines;
       }
       for (const char byte : std::string_view{bytes, static_cast<std::size_t>(got)}) {
@@ -58,11 +61,14 @@ class LineSplitter {
   }
   // Whether the pipe has ended (polling it further would only say so again and again).
   [[nodiscard]] bool ended() const { return ended_; }
+  // Whether the last line read had no end: the writer stopped in the middle of it.
+  [[nodiscard]] bool ended_mid_line() const { return ended_mid_line_; }
 
  private:
   static constexpr std::size_t longest_line = 4096;
   std::string pending_;
   bool ended_ = false;
+  bool ended_mid_line_ = false;
 };
 
 void make_non_blocking(int fd) {
@@ -161,7 +167,16 @@ class Supervisor {
 
   // Reads every pipe that has something, handling complete lines.
   void pump() {
-    for (std::string& line : console_lines_.read(qemu_.output_fd())) on_console(std::move(line));
+    std::vector<std::string> lines = console_lines_.read(qemu_.output_fd());
+    // The stop we asked for may cut the firmware's last line: kept in the console file, not read as a report.
+    const bool cut_by_the_stop = stopping_ && console_lines_.ended_mid_line() && !lines.empty();
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      if (cut_by_the_stop && k + 1 == lines.size()) {
+        if (console_.is_open()) console_ << lines[k] << std::endl;
+      } else {
+        on_console(std::move(lines[k]));
+      }
+    }
     for (const std::string& line : qemu_errors_.read(qemu_.errors_fd())) {
       // QEMU's "terminating on signal 15" is the stop we asked for, not news.
       if (!(stopping_ && line.find("terminating on signal") != std::string::npos)) streams_.err << line << '\n';
