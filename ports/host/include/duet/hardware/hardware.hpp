@@ -10,7 +10,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "duet/blocks/convert.hpp"
 #include "duet/hardware/resources.hpp"
 
 namespace duet::plant {
@@ -36,11 +38,70 @@ void connect(plant::Plant* plant);
 void write(std::string_view resource, std::span<const double> values);
 void read(std::string_view resource, std::span<double> values);
 
-}  // namespace duet::hardware
+namespace detail {
+// The values of one call as the plant takes them, as many as the resource's elements, in a buffer each thread keeps:
+// a simulated robot's step makes a dozen calls, none of which should allocate.
+inline std::span<double> plant_values(std::size_t count) {
+  thread_local std::vector<double> values;
+  if (values.size() < count) values.resize(count);
+  return std::span{values}.first(count);
+}
 
-#include "duet/hardware/by_plant_name.hpp"
+template <typename Element>
+void write_as_doubles(std::string_view resource, std::span<const Element> elements) {
+  const std::span<double> values = plant_values(elements.size());
+  for (std::size_t k = 0; k < elements.size(); ++k) values[k] = static_cast<double>(elements[k]);
+  write(resource, values);
+}
+template <typename Element>
+void read_as(std::string_view resource, std::span<Element> elements) {
+  const std::span<double> values = plant_values(elements.size());
+  read(resource, values);
+  for (std::size_t k = 0; k < elements.size(); ++k) elements[k] = blocks::convert<Element>(values[k]);
+}
+}  // namespace detail
 
-namespace duet::hardware {
+// The typed calls generated code makes (docs/MODELS.md, "Hardware blocks"): each resource by the plant's name for
+// it, converted to and from doubles as the interpreter converts them, so that generated code and `duet sim` give the
+// plant the same numbers and take the same back.
+template <PwmChannel channel>
+void pwm_write(float percent) {
+  const double value = percent;
+  write(plant_name(channel).view(), {&value, 1});
+}
+
+template <CaptureChannel channel>
+CaptureReading capture_read() {
+  double values[2]{};
+  read(plant_name(channel).view(), values);
+  return {blocks::convert<std::uint32_t>(values[0]), blocks::convert<bool>(values[1])};
+}
+
+template <SpiBus bus>
+void spi_transfer(std::span<const std::uint8_t> bytes) {
+  detail::write_as_doubles(plant_name(bus).view(), bytes);
+}
+template <SpiBus bus>
+void spi_received(std::span<std::uint8_t> bytes) {
+  detail::read_as(plant_name(bus).view(), bytes);
+}
+
+template <AdcInput input>
+void adc_start(std::uint16_t count) {
+  const double value = count;
+  write(plant_name(input).view(), {&value, 1});
+}
+template <AdcInput input>
+void adc_samples(std::span<std::uint16_t> samples) {
+  detail::read_as(plant_name(input).view(), samples);
+}
+
+template <ExtiLine line>
+bool exti_level() {
+  double value = 0;
+  read(plant_name(line).view(), {&value, 1});
+  return blocks::convert<bool>(value);
+}
 
 template <IpcChannel channel>
 void ipc_send(std::span<const std::uint8_t> bytes) {
