@@ -770,7 +770,7 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
     return "  duet::hardware::adc_start" + resource + "(std::uint16_t{" + std::to_string(count) + "});\n";
   }
   if (type == "PwmOut") {
-    return "  duet::hardware::pwm_write" + resource + "(" + converted(block.inputs[0], DataType::float32) + ");\n";
+    return "  duet::hardware::pwm_write" + resource + "(" + converted(block.inputs[0], 0, DataType::float32) + ");\n";
   }
   if (type == "InputCapture") {
     std::string text =
@@ -786,13 +786,7 @@ std::string Generator::hardware_output(const ProgramBlock& block) const {
   const bool sends = type == "SpiDma" || type == "IpcSend";
   std::string text = "  {\n";
   if (sends && !block.inputs.empty()) {
-    std::string bytes;
-    for (const std::size_t signal : block.inputs) {
-      for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
-        bytes += (bytes.empty() ? "" : ", ") + converted(signal, i, DataType::uint8);
-      }
-    }
-    text += "    const std::uint8_t written[] = {" + bytes +
+    text += "    const std::uint8_t written[] = {" + every_element(block.inputs, DataType::uint8) +
             "};\n    duet::hardware::" + (type == "SpiDma" ? "spi_transfer" : "ipc_send") + resource + "(written);\n";
   }
   if (!block.outputs.empty()) {
@@ -810,20 +804,24 @@ std::string Generator::converted(std::size_t signal, std::size_t index, DataType
   return "duet::blocks::convert<" + type_of(type) + ">(" + element(signal, index) + ")";
 }
 
-std::string Generator::converted(std::size_t signal, DataType type) const { return converted(signal, 0, type); }
+// Every element of the signals in turn, each as `type`, separated by commas: an array's initializer.
+std::string Generator::every_element(const std::vector<std::size_t>& signals, DataType type) const {
+  std::string text;
+  for (const std::size_t signal : signals) {
+    for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
+      text += (text.empty() ? "" : ", ") + converted(signal, i, type);
+    }
+  }
+  return text;
+}
 
 // PlantInput and PlantOutput: the plant's resource by name, values as doubles (the PC's port only).
 std::string Generator::plant_resource_access(const ProgramBlock& block) const {
   const std::string resource = "\"" + hardware_resource(block) + "\"";
   std::string text = "  {\n";
   if (!block.inputs.empty()) {
-    std::string values;
-    for (const std::size_t signal : block.inputs) {
-      for (std::size_t i = 0; i < program_.signals[signal].type.elements(); ++i) {
-        values += (values.empty() ? "" : ", ") + converted(signal, i, DataType::float64);
-      }
-    }
-    text += "    const double written[] = {" + values + "};\n    duet::hardware::write(" + resource + ", written);\n";
+    text += "    const double written[] = {" + every_element(block.inputs, DataType::float64) +
+            "};\n    duet::hardware::write(" + resource + ", written);\n";
   }
   if (!block.outputs.empty()) {
     const std::size_t signal = block.outputs[0];

@@ -70,7 +70,7 @@ class Generator {
   [[nodiscard]] std::string hardware_output(const ProgramBlock& block) const;
   [[nodiscard]] std::string plant_resource_access(const ProgramBlock& block) const;
   [[nodiscard]] std::string converted(std::size_t signal, std::size_t index, DataType type) const;
-  [[nodiscard]] std::string converted(std::size_t signal, DataType type) const;
+  [[nodiscard]] std::string every_element(const std::vector<std::size_t>& signals, DataType type) const;
   [[nodiscard]] std::string release_flag(const ProgramBlock& block, std::string& statements) const;
   [[nodiscard]] static std::string shared_countdown(std::size_t task, std::uint32_t ratio);
   [[nodiscard]] std::vector<std::pair<std::size_t, std::uint32_t>> shared_countdowns() const;  // (task, ratio)
