@@ -9,26 +9,6 @@ namespace {
 
 constexpr std::uint32_t nanoseconds_per_second = 1'000'000'000;
 
-// The executive's time at the last base tick, and the period that advances it.
-struct BaseTime {
-  std::uint32_t period_cycles = 0;
-  std::uint32_t period_microseconds = 0;
-  std::uint32_t period_nanoseconds = 0;  // beyond the whole microseconds
-  std::uint32_t microseconds = 0;
-  std::uint32_t nanoseconds = 0;  // beyond them, below 1000
-};
-BaseTime base_time;
-
-// The time's update in the base tick.
-void advance_base_time() {
-  base_time.microseconds += base_time.period_microseconds;
-  base_time.nanoseconds += base_time.period_nanoseconds;
-  if (base_time.nanoseconds >= 1000U) {
-    base_time.nanoseconds -= 1000U;
-    ++base_time.microseconds;
-  }
-}
-
 }  // namespace
 
 rt::Ceiling ExecutivePort::tasks_ceiling;
@@ -71,12 +51,19 @@ void ExecutivePort::skip_base_tick() {
   count_base_tick();  // the tick happened; the executive drops only its activations
 }
 
-void ExecutivePort::count_base_tick() {
+void ExecutivePort::carry_nanoseconds() {
+  const auto carry = [] {
+    base_time.nanoseconds += base_time.period_nanoseconds;
+    if (base_time.nanoseconds >= 1000U) {
+      base_time.nanoseconds -= 1000U;
+      ++base_time.carried_microseconds;
+    }
+  };
   if (base_tick_at_ceiling) {
-    advance_base_time();
+    carry();
   } else {
     const CriticalSection masked{tasks_ceiling};  // a more urgent task may read the time in the middle
-    advance_base_time();
+    carry();
   }
 }
 
@@ -98,7 +85,8 @@ std::uint32_t ExecutivePort::executive_microseconds() {
   }
   std::uint32_t cycles = base_time.period_cycles - 1U - count;
   if (tick_pending) cycles += base_time.period_cycles;
-  return base_time.microseconds + cycles / cycles_per_microsecond +
+  return base_time.ticks * base_time.period_microseconds + base_time.carried_microseconds +
+         cycles / cycles_per_microsecond +
          (base_time.nanoseconds + (cycles % cycles_per_microsecond) * nanoseconds_per_cycle) / 1000U;
 }
 

@@ -54,7 +54,25 @@ class ExecutivePort {
   [[nodiscard]] static std::uint32_t executive_microseconds();
 
  private:
-  static void count_base_tick();
+  // What the executive's time is computed from: the base ticks so far and the period.
+  struct BaseTime {
+    std::uint32_t period_cycles = 0;
+    std::uint32_t period_microseconds = 0;
+    std::uint32_t period_nanoseconds = 0;  // beyond the whole microseconds
+    std::uint32_t ticks = 0;               // wrapping, as the time in microseconds does
+    // A period with nanoseconds beyond its whole microseconds adds them up at each tick: the whole microseconds they
+    // made so far, and what is left (below 1000).
+    std::uint32_t carried_microseconds = 0;
+    std::uint32_t nanoseconds = 0;
+  };
+  static BaseTime base_time;
+
+  // In the base tick, on every tick: inline, one word written (a more urgent reader sees the count before or after).
+  static void count_base_tick() {
+    base_time.ticks = base_time.ticks + 1U;
+    if (base_time.period_nanoseconds != 0) carry_nanoseconds();
+  }
+  static void carry_nanoseconds();
 
   static constexpr CmsdkTimer base_timer{timer0_base};
   static constexpr CmsdkTimer cycle_counter{timer1_base};
@@ -65,6 +83,8 @@ class ExecutivePort {
   static rt::Ceiling tasks_ceiling;
   static bool base_tick_at_ceiling;
 };
+
+inline ExecutivePort::BaseTime ExecutivePort::base_time{};
 
 // The board's executive port plus an output per task: LED i (leds_register) is lit while task i runs, for i < 8; on
 // hardware the same hooks drive a pin that an oscilloscope watches.

@@ -16,7 +16,7 @@
 #include <cstdint>
 
 #include "duet/rt/ceiling.hpp"
-#include "duet/rt/nested_timing.hpp"
+#include "duet/rt/net_timing.hpp"
 #include "duet/rt/task_statistics.hpp"
 #include "duet/rt/task_table.hpp"
 #include "duet/rt/tick_count.hpp"
@@ -50,6 +50,8 @@ class Executive {
     if (model_.tasks.size() > TaskCapacity) return TaskTableError::too_many_tasks;
     if (const TaskTableError error = check(model_); error != TaskTableError::none) return error;
     rates_ = rate_count(model_);
+    for (std::size_t task = 0; task < model_.tasks.size(); ++task) entries_[task] = model_.tasks[task].entry;
+    stop_tick_ = model_.final_tick != 0 ? model_.final_tick : UINT64_MAX;
     ceiling_ = rt::tasks_ceiling(model_);
     for (std::size_t task = 0; task < model_.tasks.size(); ++task) {
       at_ceiling_[task] = group_priority(model_, task) == ceiling_.priority;
@@ -74,6 +76,7 @@ class Executive {
   bool begin() {
     ExecutiveState ready = ExecutiveState::ready;
     if (!state_.compare_exchange_strong(ready, ExecutiveState::running)) return false;
+    began_cycles_ = previous_tick_cycles_ = port_.cycles();  // the core load counts from here
     port_.start_base_timer(model_.base_period_ns);
     return true;
   }
@@ -113,24 +116,17 @@ class Executive {
   void on_base_tick() {
     if (state_.load(std::memory_order_relaxed) != ExecutiveState::running) return;
     const std::uint32_t now = port_.cycles();
-    if (ticks_.read_in_writer() != 0) load_.elapsed_cycles += now - previous_tick_cycles_;
+    if (now < previous_tick_cycles_) ++cycle_counter_wraps_;  // a base period is far shorter than a wrap
     previous_tick_cycles_ = now;
 
     run_measured(0, now);
-    for (std::size_t rate = 1; rate < rates_; ++rate) {
-      if (!is_release_tick(rate)) continue;
-      if (model_.tasking_mode == TaskingMode::single) {
-        run_measured(rate, port_.cycles());
-      } else if (rate_released_[rate].exchange(true)) {
-        overrun(rate);  // the previous activation has not finished
-      } else {
-        port_.trigger_rate(rate);
-      }
+    if (rates_ > 1) {
+      release_slower_rates();
+      count_down_releases();
     }
-    advance_tick();
+    count_tick();
 
     if (port_.base_tick_pending()) overrun(0);
-    if (model_.final_tick != 0 && ticks_.read_in_writer() >= model_.final_tick) request_stop(StopReason::final_tick);
   }
 
   // Multitasking: the software interrupt of a slower rate.
@@ -173,7 +169,10 @@ class Executive {
   [[nodiscard]] ExecutiveState state() const { return state_; }
   [[nodiscard]] StopReason stop_reason() const { return stop_reason_; }
   [[nodiscard]] const TaskStatistics& statistics(std::size_t task) const { return statistics_[task]; }
-  [[nodiscard]] CoreLoad load() const { return {timing_.busy_cycles(), load_.elapsed_cycles}; }
+  [[nodiscard]] CoreLoad load() const {
+    const std::uint64_t elapsed = (std::uint64_t{cycle_counter_wraps_} << 32U) + previous_tick_cycles_ - began_cycles_;
+    return {timing_.busy_cycles(), elapsed};
+  }
   // The ceiling of what all tasks share (the executive's own sections), and the longest section measured at a
   // ceiling, in cycles: blocking for `duet sched`.
   [[nodiscard]] Ceiling tasks_ceiling() const { return ceiling_; }
@@ -184,24 +183,34 @@ class Executive {
   // Inlined: the base tick runs it on every tick, and a call costs its registers' saving there.
   [[gnu::always_inline]] void run_measured(std::size_t task, std::uint32_t start) {
     // The timing of nested tasks is shared by every task: a task at their ceiling is never preempted by another and
-    // takes no section; the others take one at the ceiling.
-    if (at_ceiling_[task]) {
-      timing_.begin(start);
-    } else {
-      [[maybe_unused]] const Section section{*this, ceiling_};
-      timing_.begin(start);
-    }
+    // takes no section; the others take one at the ceiling to end theirs (beginning only reads a word).
+    const NetTiming::Start started = timing_.begin(start);
     if constexpr (requires { port_.task_started(task); }) port_.task_started(task);
-    model_.tasks[task].entry();
+    entries_[task]();
     if constexpr (requires { port_.task_finished(task); }) port_.task_finished(task);
     std::uint32_t net_cycles = 0;
     if (at_ceiling_[task]) {
-      net_cycles = timing_.end(port_.cycles());
+      net_cycles = timing_.end(started, port_.cycles());
     } else {
       [[maybe_unused]] const Section section{*this, ceiling_};
-      net_cycles = timing_.end(port_.cycles());
+      net_cycles = timing_.end(started, port_.cycles());
     }
     statistics_[task].record(net_cycles);
+  }
+
+  // Single-tasking runs each slower rate due at this tick here, fastest first; multitasking triggers its software
+  // interrupt. Out of line: the base tick of a model with one rate does not pay for it.
+  [[gnu::noinline]] void release_slower_rates() {
+    for (std::size_t rate = 1; rate < rates_; ++rate) {
+      if (!is_release_tick(rate)) continue;
+      if (model_.tasking_mode == TaskingMode::single) {
+        run_measured(rate, port_.cycles());
+      } else if (rate_released_[rate].exchange(true)) {
+        overrun(rate);  // the previous activation has not finished
+      } else {
+        port_.trigger_rate(rate);
+      }
+    }
   }
 
   void overrun(std::size_t task) {
@@ -210,13 +219,20 @@ class Executive {
       request_stop(StopReason::overrun);
     } else if (task == 0) {
       port_.skip_base_tick();
-      advance_tick();  // the tick happened; its activations are dropped
+      // The tick happened; its activations are dropped.
+      if (rates_ > 1) count_down_releases();
+      count_tick();
     }
   }
 
+  void count_tick() {
+    const std::uint32_t low = ticks_.increment();
+    if (low == static_cast<std::uint32_t>(stop_tick_) && ticks_.read_in_writer() == stop_tick_)
+      request_stop(StopReason::final_tick);
+  }
+
   // Counts down to each rate's next release rather than dividing the 64-bit tick count on every tick.
-  void advance_tick() {
-    ticks_.increment();
+  void count_down_releases() {
     for (std::size_t rate = 1; rate < rates_; ++rate) {
       std::uint32_t& countdown = ticks_until_release_[rate];
       countdown = countdown == 0 ? model_.tasks[rate].period_ticks - 1U : countdown - 1U;
@@ -226,15 +242,19 @@ class Executive {
   const ModelDescription& model_;
   Port& port_;
   std::size_t rates_ = 0;
+  std::array<void (*)(), TaskCapacity> entries_{};  // the task table's, one load away
   std::atomic<ExecutiveState> state_{ExecutiveState::created};
   StopReason stop_reason_ = StopReason::none;
   TickCount<> ticks_;
+  std::uint64_t stop_tick_ = UINT64_MAX;  // the final tick, if the model has one
+  // The cycles elapsed from begin() to the last base tick, counted without a 64-bit addition on every tick.
+  std::uint32_t began_cycles_ = 0;
   std::uint32_t previous_tick_cycles_ = 0;
+  std::uint32_t cycle_counter_wraps_ = 0;
   std::array<std::uint32_t, TaskCapacity> ticks_until_release_{};  // 0: the current tick releases the rate
   std::array<std::atomic<bool>, TaskCapacity> rate_released_{};
   std::array<TaskStatistics, TaskCapacity> statistics_{};
-  NestedTiming timing_;
-  CoreLoad load_;
+  NetTiming timing_;
   Ceiling ceiling_;
   std::array<bool, TaskCapacity> at_ceiling_{};
   SectionTiming sections_;

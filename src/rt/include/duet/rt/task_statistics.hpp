@@ -24,7 +24,7 @@ struct TaskStatistics {
   }
 };
 
-// Cycles spent in tasks against cycles elapsed since the first base tick; the rest is idle time.
+// Cycles spent in tasks against cycles elapsed since the executive began; the rest is idle time.
 struct CoreLoad {
   std::uint64_t busy_cycles = 0;
   std::uint64_t elapsed_cycles = 0;

@@ -26,10 +26,12 @@ class TickCount {
       : low_(static_cast<std::uint32_t>(start)), high_(static_cast<std::uint32_t>(start >> word_bits)) {}
 
   // In the base-tick interrupt only. Less urgent readers cannot run in between, so the order of the stores is free.
-  void increment() {
+  // Returns the new low word: what the writer compares first.
+  std::uint32_t increment() {
     const std::uint32_t low = low_.load(std::memory_order_relaxed) + 1U;
     if (low == 0) high_.store(high_.load(std::memory_order_relaxed) + 1U, std::memory_order_relaxed);
     low_.store(low, std::memory_order_relaxed);
+    return low;
   }
 
   // In the base-tick interrupt only: no one else writes the words, so the writer reads its own count whole.
