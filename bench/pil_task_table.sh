@@ -3,8 +3,9 @@
 # Cortex-M4"): 25 s of balbot-pil in lock-step against the disturbed robot (a duty pulse at 10 s, a shove at 20 s),
 # with P, I and D sent twice through the bridge's WebSocket so that the IPCC_RX1 task runs; then each task's net
 # execution time in instructions (QEMU -icount shift=2: the board's 25 MHz timer counts 10 instructions), as an
-# ESTIMATE in microseconds for a 209 MHz core at one instruction per cycle, and `duet sched` on those times with the
-# thesis' inter-arrival times (table 4.8), as apps/balbot/README.md does with the thesis' own measurements.
+# ESTIMATE in microseconds for a 209 MHz core at one instruction per cycle, and `duet sched` on those times and the
+# longest critical section measured at each priority ceiling (its blocking), with the thesis' inter-arrival times
+# (table 4.8), as apps/balbot/README.md does with the thesis' own measurements.
 #
 # Usage: bench/pil_task_table.sh      (after building host-release: duet, duet-bridge; m4-qemu: balbot-pil)
 set -euo pipefail
@@ -33,18 +34,15 @@ tac "$out/console.txt" | awk '/^duet-task /{for(i=2;i<=NF;i++){split($i,kv,"=");
   if(!(f["name"] in seen)){seen[f["name"]]=1; print f["index"], f["name"], f["activations"], f["mean_cycles"], f["max_cycles"]}}' |
   sort -n >"$out/tasks.txt"
 echo "task           activations  mean instr  max instr  max us at 209 MHz (estimate)"
-wcet=()
 while read -r index name activations mean max; do
   us=$(awk -v cycles="$max" 'BEGIN { printf "%.3f", cycles * 10 / 209 }')
   printf '%-14s %11s %11s %10s %12s\n' "$name" "$activations" $((mean * 10)) $((max * 10)) "$us"
-  case $name in
-    rate_*) task=step_$name ;;
-    *) task=task_$name ;;
-  esac
-  wcet+=("$task=$us")
 done <"$out/tasks.txt"
 
-"$duet" model tasks apps/balbot/balbot.yaml --wcet "${wcet[@]}" \
+# The measured times and the longest section at each priority ceiling go to duet sched as they are: a timer count is
+# 10 instructions, 10 / 209 us at 209 MHz, so 20.9 counts a microsecond.
+"$duet" model tasks apps/balbot/balbot.yaml --measured "$out/console.txt" --cycles-per-us 20.9 \
   --interarrival task_EXTI8=997.62 task_DMA2_Stream2=997.62 task_DMA2_Stream3=997.91 task_TIM1=500 \
   task_TIM2=501.57 task_TIM4=501.57 task_TIM5=100 task_DMA2_Stream4=1000000 task_IPCC_RX1=8907.7 >"$out/tasks.yaml"
+grep '^core' "$out/tasks.yaml"
 "$duet" sched "$out/tasks.yaml"

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,7 @@ TEST(BalbotPil, TenSecondsOnTheEmulatedCortexM4BalanceWithoutOverrunsAndMatchThe
   std::string signals;
   std::size_t task_lines = 0;
   std::size_t overrunning_tasks = 0;
+  std::set<std::string> section_ceilings;
   for (std::size_t start = 0; start < console_text.value().size();) {
     const std::size_t end = console_text.value().find('\n', start);
     const std::string line = console_text.value().substr(start, end - start);
@@ -68,7 +70,13 @@ TEST(BalbotPil, TenSecondsOnTheEmulatedCortexM4BalanceWithoutOverrunsAndMatchThe
       ++task_lines;
       if (field(line, "overruns") != "0") ++overrunning_tasks;
     }
+    if (line.starts_with("duet-section ") && field(line, "longest_cycles") != "0")
+      section_ceilings.insert(field(line, "ceiling"));
   }
+  // Measured sections, blocking for duet sched: the executive's own at the ceiling of every task (TIM2's and TIM4's
+  // group 1), and the settings that Linux's side and the model share at the ceiling of their users (rate 10, group 11,
+  // and IPCC_RX1, group 9).
+  EXPECT_EQ(section_ceilings, (std::set<std::string>{"1", "9"}));
   ASSERT_EQ(ended.size(), 1U) << console_text.value();
   EXPECT_EQ(ended[0], "duet-end reason=final_tick ticks=10001 overruns=0 link=ok");
   EXPECT_GE(task_lines, 11U * 10U);  // every task, every second

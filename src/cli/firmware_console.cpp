@@ -72,6 +72,7 @@ class Fields {
 };
 
 constexpr std::uint64_t most_tasks = 256;
+constexpr std::uint64_t last_group = 15;  // NVIC groups are 0 to 15 with 4 priority bits
 
 template <typename Line>
 ConsoleLine checked(Line line, const Fields& fields) {
@@ -111,6 +112,17 @@ ConsoleLine parse_console_line(std::string_view line) {
     }
     return checked(task, fields);
   }
+  if (keyword == "duet-section") {
+    Fields fields{keyword, words};
+    FirmwareSection section;
+    fields.number("ceiling", section.ceiling);
+    fields.number("longest_cycles", section.longest_cycles);
+    if (fields.problem().empty() && section.ceiling > last_group) {
+      return MalformedLine{"duet-section: ceiling " + std::to_string(section.ceiling) + " is beyond " +
+                           std::to_string(last_group)};
+    }
+    return checked(section, fields);
+  }
   if (keyword == "duet-end") {
     Fields fields{keyword, words};
     FirmwareEnd end;
@@ -133,6 +145,8 @@ void take(FirmwareReport& report, const ConsoleLine& line) {
   } else if (const auto* task = std::get_if<FirmwareTask>(&line)) {
     if (report.tasks.size() <= task->index) report.tasks.resize(task->index + 1);
     report.tasks[task->index] = *task;
+  } else if (const auto* section = std::get_if<FirmwareSection>(&line)) {
+    report.sections[section->ceiling] = section->longest_cycles;
   } else if (const auto* end = std::get_if<FirmwareEnd>(&line)) {
     report.end = *end;
   } else if (const auto* losses = std::get_if<FirmwareLosses>(&line)) {

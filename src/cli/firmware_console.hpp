@@ -6,12 +6,15 @@
 //                                                                        one per task, after each duet-status
 //   duet-lost xcp_responses=0 daq_samples=0 telemetry=0                  with each duet-status, cumulative: what the
 //                                                                        firmware's channels dropped, by name
+//   duet-section ceiling=9 longest_cycles=40                             after the tasks, one per priority ceiling
+//                                                                        (its group) where a section was measured
 //   duet-end reason=final_tick ticks=10000 overruns=0                    once, when the firmware stops by itself
 //
 // Fields are KEY=VALUE words separated by spaces, in any order; keys a line does not know are skipped, so that the
 // firmware may say more. Any other line is free text. Cycles are ticks of the board's 25 MHz timer.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +41,12 @@ struct FirmwareTask {
   std::uint64_t max_cycles = 0;
 };
 
+// The longest critical section measured at a priority ceiling (docs/EXECUTIVE.md, "Priority ceilings").
+struct FirmwareSection {
+  std::uint64_t ceiling = 0;  // the group, 0 to 15
+  std::uint64_t longest_cycles = 0;
+};
+
 struct FirmwareEnd {
   std::string reason;  // final_tick, ...
   std::uint64_t ticks = 0;
@@ -58,7 +67,8 @@ struct MalformedLine {
   std::string problem;  // "duet-task: no 'name'"
 };
 
-using ConsoleLine = std::variant<FirmwareStatus, FirmwareTask, FirmwareEnd, FirmwareLosses, ConsoleText, MalformedLine>;
+using ConsoleLine = std::variant<FirmwareStatus, FirmwareTask, FirmwareSection, FirmwareEnd, FirmwareLosses,
+                                 ConsoleText, MalformedLine>;
 
 // One line, without its end (a trailing '\r' is ignored).
 [[nodiscard]] ConsoleLine parse_console_line(std::string_view line);
@@ -66,7 +76,8 @@ using ConsoleLine = std::variant<FirmwareStatus, FirmwareTask, FirmwareEnd, Firm
 // What the console said so far: the latest status, the latest line of each task, the end.
 struct FirmwareReport {
   std::optional<FirmwareStatus> status;
-  std::vector<FirmwareTask> tasks;  // by index (at most 256); an index never reported has an empty name
+  std::vector<FirmwareTask> tasks;                  // by index (at most 256); an index never reported has an empty name
+  std::map<std::uint64_t, std::uint64_t> sections;  // the latest longest section in cycles, by ceiling
   std::optional<FirmwareEnd> end;
   std::optional<FirmwareLosses> losses;  // the latest
 };

@@ -38,6 +38,10 @@ TEST(FirmwareConsole, TheLinesTheFirmwareReportsWith) {
   EXPECT_EQ(losses.counts, (std::vector<Count>{{"xcp_responses", 0}, {"daq_samples", 7}, {"telemetry", 1}}));
   EXPECT_EQ(problem_of("duet-lost daq_samples=many"), "duet-lost: 'daq_samples' is not a number: 'many'");
 
+  const FirmwareSection section = parsed_as<FirmwareSection>("duet-section ceiling=9 longest_cycles=40");
+  EXPECT_EQ(section.ceiling, 9U);
+  EXPECT_EQ(section.longest_cycles, 40U);
+
   const FirmwareEnd end = parsed_as<FirmwareEnd>("duet-end reason=final_tick ticks=10000 overruns=0");
   EXPECT_EQ(end.reason, "final_tick");
   EXPECT_EQ(end.ticks, 10000U);
@@ -73,6 +77,8 @@ TEST(FirmwareConsole, ReportLinesThatDoNotSayWhatTheyMustAreMalformed) {
   EXPECT_EQ(problem_of("duet-end ticks=99999999999999999999999 overruns=0 reason=x"),
             "duet-end: 'ticks' is not a number: '99999999999999999999999'");
   EXPECT_EQ(problem_of("duet-end \xff\xfe"), "duet-end: no 'reason'");
+  EXPECT_EQ(problem_of("duet-section ceiling=16 longest_cycles=4"), "duet-section: ceiling 16 is beyond 15");
+  EXPECT_EQ(problem_of("duet-section ceiling=3"), "duet-section: no 'longest_cycles'");
 }
 
 TEST(FirmwareConsole, TheReportKeepsTheLatestOfEach) {
@@ -81,6 +87,7 @@ TEST(FirmwareConsole, TheReportKeepsTheLatestOfEach) {
                            "duet-task index=1 name=b activations=1 overruns=0 min_cycles=1 mean_cycles=1 max_cycles=1",
                            "duet-status time_s=2 ticks=2000 busy_ppm=20 overruns=1", "duet-status garbage",
                            "duet-task index=1 name=b activations=2 overruns=0 min_cycles=1 mean_cycles=1 max_cycles=3",
+                           "duet-section ceiling=2 longest_cycles=7", "duet-section ceiling=2 longest_cycles=9",
                            "duet-end reason=final_tick ticks=2000 overruns=1"}) {
     take(report, parse_console_line(line));
   }
@@ -90,6 +97,7 @@ TEST(FirmwareConsole, TheReportKeepsTheLatestOfEach) {
   EXPECT_EQ(report.tasks[0].name, "");  // never reported
   EXPECT_EQ(report.tasks[1].activations, 2U);
   EXPECT_EQ(report.tasks[1].max_cycles, 3U);
+  EXPECT_EQ(report.sections, (std::map<std::uint64_t, std::uint64_t>{{2, 9}}));
   ASSERT_TRUE(report.end);
   EXPECT_EQ(report.end->reason, "final_tick");
 }

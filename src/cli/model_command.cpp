@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -14,6 +16,9 @@
 #include <ostream>
 #include <set>
 #include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "checked_model.hpp"
@@ -21,6 +26,7 @@
 #include "duet/model/rates.hpp"
 #include "duet/model/render.hpp"
 #include "duet/model/task_set_file.hpp"
+#include "firmware_console.hpp"
 
 namespace duet::cli {
 namespace {
@@ -141,28 +147,94 @@ ExitCode render(const std::string& file, std::string output, bool dot_only, Stre
   return ExitCode::success;
 }
 
-// The tasks as a task file for `duet sched`, with the times the model cannot know given as NAME=MICROSECONDS.
-ExitCode tasks(const std::string& file, const std::vector<std::string>& wcet,
-               const std::vector<std::string>& interarrival, Streams streams) {
+// NAME=NUMBER words into a map; false, with the word named, if one is not.
+template <typename Key>
+bool assignments(const std::vector<std::string>& given, std::map<Key, double>& into, std::string_view what,
+                 std::ostream& err) {
+  for (const std::string& assignment : given) {
+    const auto equals = assignment.find('=');
+    double value = 0;
+    const char* number = equals == std::string::npos ? nullptr : assignment.c_str() + equals + 1;
+    char* end = nullptr;
+    if (number != nullptr) value = std::strtod(number, &end);
+    Key key{};
+    bool key_read = equals != std::string::npos;
+    if constexpr (std::is_same_v<Key, std::string>) {
+      if (key_read) key = assignment.substr(0, equals);
+    } else if (key_read) {
+      const auto [at, error] = std::from_chars(assignment.data(), assignment.data() + equals, key);
+      key_read = error == std::errc{} && at == assignment.data() + equals && equals > 0;
+    }
+    if (!key_read || number == nullptr || end == number || *end != '\0') {
+      err << "duet model tasks: '" << assignment << "' is not " << what << '\n';
+      return false;
+    }
+    into[key] = value;
+  }
+  return true;
+}
+
+// Microseconds rounded up to the picosecond, the task file's finest unit: a bound may grow, never shrink.
+double microseconds_up(std::uint64_t cycles, double cycles_per_us) {
+  return std::ceil(static_cast<double>(cycles) / cycles_per_us * 1e6) / 1e6;
+}
+
+// The execution times and sections a firmware's console reported (its latest duet-task and duet-section lines), in
+// microseconds at `cycles_per_us`. A task that never ran has no time to give.
+Status read_measured(const std::string& console, double cycles_per_us, std::map<std::string, double>& wcet_us,
+                     std::map<int, double>& sections_us) {
+  std::ifstream in{console};
+  if (!in) return Failure{"cannot read the console file '" + console + "'"};
+  if (!(cycles_per_us > 0))
+    return Failure{"--measured needs --cycles-per-us above 0 (the rate of the cycles it reports)"};
+  FirmwareReport report;
+  std::string line;
+  for (std::size_t number = 1; std::getline(in, line); ++number) {
+    const ConsoleLine parsed = parse_console_line(line);
+    if (const auto* malformed = std::get_if<MalformedLine>(&parsed))
+      return Failure{console + ":" + std::to_string(number) + ": " + malformed->problem};
+    take(report, parsed);
+  }
+  if (report.tasks.empty()) return Failure{console + ": no duet-task line (a firmware's console, docs/LINK.md)"};
+  for (const FirmwareTask& task : report.tasks) {
+    if (task.name.empty() || task.activations == 0) continue;
+    // The console names tasks as the task table does ("rate_1", "EXTI8"); the task file as their functions do.
+    const std::string name = (task.name.starts_with("rate_") ? "step_" : "task_") + task.name;
+    wcet_us[name] = microseconds_up(task.max_cycles, cycles_per_us);
+  }
+  for (const auto& [ceiling, longest] : report.sections)
+    sections_us[static_cast<int>(ceiling)] = microseconds_up(longest, cycles_per_us);
+  return done();
+}
+
+struct TaskTimesGiven {
+  std::vector<std::string> wcet;
+  std::vector<std::string> interarrival;
+  std::vector<std::string> sections;
+  std::string measured;
+  double cycles_per_us = 0;
+};
+
+// The tasks as a task file for `duet sched`, with the times the model cannot know measured on the target (a console)
+// or given as NAME=MICROSECONDS, which win.
+ExitCode tasks(const std::string& file, const TaskTimesGiven& given, Streams streams) {
   const auto checked = load_checked_model(file, streams.err);
   if (!checked) return ExitCode::failure;
   std::map<std::string, double> wcet_us;
   std::map<std::string, double> interarrival_us;
-  for (const auto& [given, into] : {std::pair{&wcet, &wcet_us}, std::pair{&interarrival, &interarrival_us}}) {
-    for (const std::string& assignment : *given) {
-      const auto equals = assignment.find('=');
-      double value = 0;
-      const char* number = equals == std::string::npos ? nullptr : assignment.c_str() + equals + 1;
-      char* end = nullptr;
-      if (number != nullptr) value = std::strtod(number, &end);
-      if (number == nullptr || end == number || *end != '\0') {
-        streams.err << "duet model tasks: '" << assignment << "' is not TASK=MICROSECONDS\n";
-        return ExitCode::failure;
-      }
-      (*into)[assignment.substr(0, equals)] = value;
+  std::map<int, double> sections_us;
+  if (!given.measured.empty()) {
+    if (Status read = read_measured(given.measured, given.cycles_per_us, wcet_us, sections_us); !read) {
+      streams.err << "duet model tasks: " << read.error() << '\n';
+      return ExitCode::failure;
     }
   }
-  auto text = model::task_set_file(checked->program, wcet_us, interarrival_us);
+  if (!assignments(given.wcet, wcet_us, "TASK=MICROSECONDS", streams.err) ||
+      !assignments(given.interarrival, interarrival_us, "TASK=MICROSECONDS", streams.err) ||
+      !assignments(given.sections, sections_us, "GROUP=MICROSECONDS", streams.err)) {
+    return ExitCode::failure;
+  }
+  auto text = model::task_set_file(checked->program, wcet_us, interarrival_us, sections_us);
   if (!text) {
     streams.err << "duet model tasks: " << text.error() << '\n';
     return ExitCode::failure;
@@ -176,8 +248,7 @@ struct ModelOptions {
   std::string output;
   bool dot = false;
   bool json = false;
-  std::vector<std::string> wcet;
-  std::vector<std::string> interarrival;
+  TaskTimesGiven times;
 };
 
 }  // namespace
@@ -196,12 +267,19 @@ Action define_model_command(CLI::App& command) {
   CLI::App* tasks_command =
       command.add_subcommand("tasks", "Print the model's tasks as a task file for duet sched (docs/SCHEDULING.md)");
   tasks_command->add_option("file", options->file, "The model file")->required();
-  tasks_command->add_option("--wcet", options->wcet, "TASK=US: a task's measured execution time (every task)");
-  tasks_command->add_option("--interarrival", options->interarrival,
+  tasks_command->add_option("--wcet", options->times.wcet, "TASK=US: a task's measured execution time (every task)");
+  tasks_command->add_option("--interarrival", options->times.interarrival,
                             "TASK=US: the shortest time between an interrupt task's triggers");
+  tasks_command->add_option("--section", options->times.sections,
+                            "GROUP=US: the longest critical section measured at a priority ceiling (blocking)");
+  tasks_command->add_option("--measured", options->times.measured,
+                            "A firmware's console (duet pil --console): each task's longest time and each ceiling's "
+                            "longest section, as the executive measured them; --wcet and --section win");
+  tasks_command->add_option("--cycles-per-us", options->times.cycles_per_us,
+                            "The rate of the cycles the console reports, per microsecond (with --measured)");
   return [options, render_command, tasks_command](Streams streams) {
     if (render_command->parsed()) return render(options->file, options->output, options->dot, streams);
-    if (tasks_command->parsed()) return tasks(options->file, options->wcet, options->interarrival, streams);
+    if (tasks_command->parsed()) return tasks(options->file, options->times, streams);
     return check(options->file, options->json, streams);
   };
 }

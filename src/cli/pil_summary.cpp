@@ -135,6 +135,12 @@ void task_table(const PilRun& run, std::ostream& out) {
         << task.activations << std::setw(10) << task.overruns << std::setw(12) << fixed(mean, 0) << std::setw(11)
         << fixed(max, 0) << std::setw(15) << fixed(estimated_us_at_209_mhz(max), 2) << '\n';
   }
+  // Blocking for `duet sched` (duet model tasks --measured takes it from the console).
+  for (const auto& [ceiling, cycles] : run.firmware.sections) {
+    const double longest = instructions_from_cycles(static_cast<double>(cycles), run.icount_shift);
+    out << "            longest section at ceiling " << ceiling << ": " << fixed(longest, 0) << " instr, "
+        << fixed(estimated_us_at_209_mhz(longest), 2) << " us (est.)\n";
+  }
 }
 
 void firmware_lines(const PilRun& run, std::ostream& out) {

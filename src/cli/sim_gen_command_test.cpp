@@ -153,5 +153,60 @@ TEST_F(SimGen, TasksMakeATaskFileForSched) {
       << outcome.out;
 }
 
+TEST_F(SimGen, TasksTakeTheTimesAndSectionsAFirmwareMeasured) {
+  const std::string model = examples + "pid_demo/pid_demo.yaml";
+  // A console as the firmware writes it: the latest line of each kind counts; 20 cycles a microsecond.
+  write("console.txt",
+        "booting\n"
+        "duet-task index=0 name=rate_1 activations=10 overruns=0 min_cycles=1 mean_cycles=1 max_cycles=100\n"
+        "duet-task index=1 name=rate_10 activations=1 overruns=0 min_cycles=1 mean_cycles=1 max_cycles=30\n"
+        "duet-section ceiling=1 longest_cycles=5\n"
+        "duet-task index=0 name=rate_1 activations=20 overruns=0 min_cycles=1 mean_cycles=1 max_cycles=500\n"
+        "duet-section ceiling=2 longest_cycles=1\n");
+  Outcome outcome = run({"model", "tasks", model, "--measured", in_folder("console.txt"), "--cycles-per-us", "20"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.out,
+            "# The tasks of pid_demo for duet sched (docs/SCHEDULING.md), written by duet model tasks.\n"
+            "core: {priority_bits: 4, sub_priority_bits: 0, sections: [{ceiling: 1, longest_us: 0.25}, {ceiling: 2, "
+            "longest_us: 0.05}]}\ntasks:\n"
+            "  - {name: step_rate_1, source: base timer, period_us: 1000, wcet_us: 25, priority: {group: 1, sub: 0}}\n"
+            "  - {name: step_rate_10, source: base timer, period_us: 10000, wcet_us: 1.5, priority: {group: 2, sub: "
+            "0}}\n");
+  // What is given wins; a time that is no whole number of picoseconds is rounded up.
+  outcome = run({"model", "tasks", model, "--measured", in_folder("console.txt"), "--cycles-per-us", "3", "--wcet",
+                 "step_rate_1=40", "--section", "2=3"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_NE(outcome.out.find("sections: [{ceiling: 1, longest_us: 1.666667}, {ceiling: 2, longest_us: 3}]"),
+            std::string::npos)
+      << outcome.out;
+  EXPECT_NE(outcome.out.find("wcet_us: 40,"), std::string::npos) << outcome.out;
+  write("tasks.yaml", outcome.out);
+  outcome = run({"sched", in_folder("tasks.yaml")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  // A section blocks the tasks at and below its ceiling only: group 1 sees the one at 1, group 2 both.
+  EXPECT_NE(
+      outcome.out.find("step_rate_1         1.0     40.000     1000.0     1000.0     0.0000     0.0400     1.6667"),
+      std::string::npos)
+      << outcome.out;
+  EXPECT_NE(
+      outcome.out.find("step_rate_10        2.0     10.000    10000.0    10000.0     0.0000     0.0010     3.0000"),
+      std::string::npos)
+      << outcome.out;
+
+  EXPECT_EQ(run({"model", "tasks", model, "--measured", in_folder("console.txt")}).err,
+            "duet model tasks: --measured needs --cycles-per-us above 0 (the rate of the cycles it reports)\n");
+  EXPECT_EQ(run({"model", "tasks", model, "--measured", in_folder("none.txt"), "--cycles-per-us", "1"}).err,
+            "duet model tasks: cannot read the console file '" + in_folder("none.txt") + "'\n");
+  write("bad.txt", "duet-section ceiling=99 longest_cycles=1\n");
+  EXPECT_EQ(run({"model", "tasks", model, "--measured", in_folder("bad.txt"), "--cycles-per-us", "1"}).err,
+            "duet model tasks: " + in_folder("bad.txt") + ":1: duet-section: ceiling 99 is beyond 15\n");
+  EXPECT_EQ(
+      run({"model", "tasks", model, "--wcet", "step_rate_1=1", "--wcet", "step_rate_10=1", "--section", "x=1"}).err,
+      "duet model tasks: 'x=1' is not GROUP=MICROSECONDS\n");
+  EXPECT_EQ(
+      run({"model", "tasks", model, "--wcet", "step_rate_1=1", "--wcet", "step_rate_10=1", "--section", "16=1"}).err,
+      "duet model tasks: section ceiling 16: groups are 0 to 15\n");
+}
+
 }  // namespace
 }  // namespace duet::cli

@@ -11,7 +11,8 @@ std::string task_function_name(const ProgramTask& task) {
 }
 
 Result<std::string> task_set_file(const Program& program, const std::map<std::string, double>& wcet_us,
-                                  const std::map<std::string, double>& interarrival_us) {
+                                  const std::map<std::string, double>& interarrival_us,
+                                  const std::map<int, double>& sections_us) {
   auto priorities = task_priorities(program);
   if (!priorities) return Failure{priorities.error()};
   std::string known;
@@ -26,7 +27,17 @@ Result<std::string> task_set_file(const Program& program, const std::map<std::st
   }
   std::string text =
       "# The tasks of " + program.model->name + " for duet sched (docs/SCHEDULING.md), written by duet model tasks.\n";
-  text += "core: {priority_bits: 4, sub_priority_bits: 0}\ntasks:\n";
+  std::string sections;
+  for (const auto& [ceiling, longest] : sections_us) {
+    if (ceiling < 0 || ceiling > 15)
+      return Failure{"section ceiling " + std::to_string(ceiling) + ": groups are 0 to 15"};
+    if (!(longest > 0))
+      return Failure{"section at ceiling " + std::to_string(ceiling) + ": times are microseconds above 0"};
+    sections += std::string{sections.empty() ? "" : ", "} + "{ceiling: " + std::to_string(ceiling) +
+                ", longest_us: " + format_number(longest) + "}";
+  }
+  text += "core: {priority_bits: 4, sub_priority_bits: 0" + (sections.empty() ? "" : ", sections: [" + sections + "]") +
+          "}\ntasks:\n";
   for (std::size_t index = 0; index < program.tasks.size(); ++index) {
     const ProgramTask& task = program.tasks[index];
     const std::string name = task_function_name(task);

@@ -106,6 +106,15 @@ void run_if(bool event, std::size_t task) {
 }  // namespace
 }  // namespace balbot::board
 
+namespace balbot::firmware {
+
+std::uint32_t executive_cycles() { return board::port.cycles(); }
+void record_section(duet::rt::Ceiling ceiling, std::uint32_t cycles) {
+  board::executive.record_section(ceiling, cycles);
+}
+
+}  // namespace balbot::firmware
+
 DUET_STM32MP15_EXECUTIVE_HANDLERS(balbot::board::executive)
 
 using balbot::board::run_if;

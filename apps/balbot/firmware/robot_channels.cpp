@@ -21,6 +21,28 @@ namespace app_channel = duet::app_channel;
 
 constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
 
+// The settings below are shared by the model's tasks that send and take the message (rate 10's IpcSend, IPCC_RX1's
+// IpcReceive) and the application channel's handler, which every board runs at its lowest priority. A section at the
+// ceiling of those tasks (Stack Resource Policy, duet/rt/ceiling.hpp) keeps them apart and never delays the more
+// urgent ones: the IMU's chain, the PWM, the encoders, the echo, the battery. Timed, so that the longest is blocking
+// for `duet sched`.
+constexpr std::size_t settings_users[] = {duet::rt::task_index(balbot::description, "rate 10"),
+                                          duet::rt::task_index(balbot::description, "IPCC_RX1")};
+constexpr duet::rt::Ceiling settings_ceiling = duet::rt::ceiling(balbot::description, settings_users);
+
+class SettingsSection {
+ public:
+  SettingsSection() = default;
+  // Recorded before the mask is lifted (members are destroyed after the body).
+  ~SettingsSection() { record_section(settings_ceiling, executive_cycles() - start_); }
+  SettingsSection(const SettingsSection&) = delete;
+  SettingsSection& operator=(const SettingsSection&) = delete;
+
+ private:
+  const cortex_m::PriorityCeiling masked_{settings_ceiling};
+  const std::uint32_t start_ = executive_cycles();
+};
+
 // XCP: the model's slave as its generated code sizes it (balbot_xcp.hpp, the A2L's limits and addresses).
 balbot::xcp::Slave slave{{.timestamp = microseconds,  // the A2L's unit
                           .write_atomically = cortex_m::copy_with_interrupts_masked,
@@ -104,7 +126,7 @@ void show_the_settings_in_use() {
   const Settings in_use{telemetry.p_in_use, telemetry.i_in_use, telemetry.d_in_use, telemetry.controller};
   std::array<bool, 4> changed{};
   {
-    const cortex_m::InterruptMask masked;
+    const SettingsSection masked;
     if (!same_bits(settings, settings_sent) || same_bits(settings, in_use)) return;
     changed = {!same_bits(settings.p, in_use.p), !same_bits(settings.i, in_use.i), !same_bits(settings.d, in_use.d),
                settings.use_lqr != in_use.use_lqr};
@@ -123,7 +145,7 @@ app_channel::Endpoint& application_endpoint() { return endpoint; }
 
 void tell_the_model_of_new_gains() {
   {
-    const cortex_m::InterruptMask masked;
+    const SettingsSection masked;
     if (same_bits(settings, settings_sent)) return;
     settings_sent = settings;
   }
@@ -150,7 +172,7 @@ void send_to_linux(std::span<const std::uint8_t> message_bytes) {
 void receive_from_linux(std::span<std::uint8_t> message_bytes) {
   std::array<std::uint8_t, settings_bytes> raw{};
   {
-    const cortex_m::InterruptMask masked;
+    const SettingsSection masked;
     std::memcpy(raw.data(), &settings_sent, raw.size());
   }
   for (std::size_t k = 0; k < message_bytes.size(); ++k) message_bytes[k] = k < raw.size() ? raw[k] : 0;

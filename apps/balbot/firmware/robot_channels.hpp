@@ -11,6 +11,7 @@
 #include <span>
 
 #include "duet/app_channel/endpoint.hpp"
+#include "duet/rt/ceiling.hpp"
 #include "duet/xcp/stream_transport.hpp"
 
 namespace balbot::firmware {
@@ -20,6 +21,10 @@ void kick_xcp();               // XCP has queued bytes: pend the interrupt that 
 void kick_application();       // so has the application channel
 std::uint32_t microseconds();  // DAQ timestamps, in the A2L's unit; interrupt-safe
 void pend_gains_task();        // the model's IPCC_RX1 task: new gains came from Linux
+// The image's executive: its cycle count, and where a section the firmware times itself leaves its length
+// (Executive::record_section), so that the longest reaches `duet sched` as blocking.
+std::uint32_t executive_cycles();
+void record_section(duet::rt::Ceiling ceiling, std::uint32_t cycles);
 
 // For the board's lines: the protocols whose bytes they carry.
 duet::xcp::StreamTransport& xcp_transport();

@@ -113,6 +113,13 @@ board::PlantLink& plant_link() { return link; }
 
 }  // namespace balbot::pil
 
+namespace balbot::firmware {
+
+std::uint32_t executive_cycles() { return pil::RobotPort::cycles(); }
+void record_section(duet::rt::Ceiling ceiling, std::uint32_t cycles) { pil::executive.record_section(ceiling, cycles); }
+
+}  // namespace balbot::firmware
+
 using balbot::pil::executive;
 
 extern "C" void TIMER0_IRQHandler() {

@@ -1,7 +1,8 @@
 #pragma once
 // The executive's account on the console, in the key=value lines that `duet pil` and tests read (docs/LINK.md,
 // "Processor in the loop"): a duet-status line (model time, ticks, core load, overruns), then a duet-task line per
-// task (activations, overruns, net execution times in cycles of the board's 25 MHz timer).
+// task (activations, overruns, net execution times in cycles of the board's 25 MHz timer), and a duet-section line per
+// priority ceiling (by its group) at which a section was measured (the longest, in the same cycles).
 
 #include <cstddef>
 #include <cstdint>
@@ -9,6 +10,7 @@
 
 #include "duet/base/text_buffer.hpp"
 #include "duet/cortex_m/board_hooks.hpp"
+#include "duet/rt/ceiling.hpp"
 #include "duet/rt/task_statistics.hpp"
 #include "duet/rt/task_table.hpp"
 
@@ -46,6 +48,15 @@ void write_executive_report(const Executive& executive, const rt::ModelDescripti
     line.append(" min_cycles=").append(statistics.activations == 0 ? 0U : statistics.min_cycles);
     line.append(" mean_cycles=").append(statistics.mean_cycles());
     line.append(" max_cycles=").append(statistics.max_cycles);
+    emit();
+  }
+  // The longest section measured at each ceiling (by its group) that had one: blocking for `duet sched`.
+  const std::size_t group_step = std::size_t{1} << model.sub_priority_bits;
+  for (std::size_t priority = 0; priority < rt::SectionTiming::levels; priority += group_step) {
+    const std::uint32_t longest = executive.longest_section(rt::Ceiling{static_cast<std::uint8_t>(priority)});
+    if (longest == 0) continue;
+    line.append("duet-section ceiling=").append(priority >> model.sub_priority_bits);
+    line.append(" longest_cycles=").append(longest);
     emit();
   }
 }

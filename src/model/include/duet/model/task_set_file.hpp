@@ -17,7 +17,10 @@ namespace duet::model {
 
 // Every task needs its execution time; every interrupt task its minimum inter-arrival time. Deadlines are the periods.
 // The periodic rates run in the base timer's interrupt (single-tasking), so they are one source there.
+// `sections_us` holds the longest critical section measured at each priority ceiling, by its group (the executive's
+// Executive::longest_section): the core's `sections`, blocking for the tasks at and below the ceiling.
 [[nodiscard]] Result<std::string> task_set_file(const Program& program, const std::map<std::string, double>& wcet_us,
-                                                const std::map<std::string, double>& interarrival_us);
+                                                const std::map<std::string, double>& interarrival_us,
+                                                const std::map<int, double>& sections_us = {});
 
 }  // namespace duet::model

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string_view>
 
 #include "duet/rt/task_table.hpp"
 
@@ -34,6 +35,17 @@ constexpr Ceiling ceiling(const ModelDescription& model, std::span<const std::si
     if (priority < most_urgent) most_urgent = priority;
   }
   return {most_urgent};
+}
+
+// Not constexpr and never defined: calling it ends a constant evaluation with a compile error that names it.
+std::size_t the_task_table_has_no_task_of_that_name();
+
+// The index of the task named `name` in the model's table, for constexpr use (a ceiling from the generated table).
+constexpr std::size_t task_index(const ModelDescription& model, std::string_view name) {
+  for (std::size_t index = 0; index < model.tasks.size(); ++index) {
+    if (model.tasks[index].name == name) return index;
+  }
+  return the_task_table_has_no_task_of_that_name();
 }
 
 // The ceiling of what every task shares: the executive's timing of nested tasks, and the port's time and task hooks.

@@ -159,6 +159,9 @@ class Executive {
     std::uint32_t start_;
   };
   [[nodiscard]] Section section(Ceiling ceiling) { return Section{*this, ceiling}; }
+  // For a section timed by code that cannot name the executive's type (a library shared by several images): records
+  // its length among the measured ones. Call inside the section, before its mask is lifted.
+  void record_section(Ceiling ceiling, std::uint32_t cycles) { sections_.record(ceiling, cycles); }
 
   // True while the base tick `ticks()` releases `rate`: what deterministic rate transitions ask in the faster task.
   [[nodiscard]] bool is_release_tick(std::size_t rate) const { return ticks_until_release_[rate] == 0; }
