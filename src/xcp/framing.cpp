@@ -115,6 +115,17 @@ FrameDecoder::Frame FrameDecoder::next_frame() {
   return {};
 }
 
+bool FrameDecoder::holds_start_of_frame(std::uint16_t counter) const {
+  const std::size_t header_size = framing_.header_size();
+  if (!framing_.has_counter() || buffered() < header_size) return false;
+  const HeaderFields header =
+      read_header(framing_, std::span<const std::uint8_t>{buffer_}.subspan(begin_, header_size));
+  const auto expected =
+      static_cast<std::uint16_t>(framing_.header == FrameHeader::len_ctr_byte ? counter & 0xFFU : counter);
+  return header.length != 0 && header.length <= max_packet_ && framing_.frame_size(header.length) <= buffer_.size() &&
+         header.counter == expected;
+}
+
 void FrameDecoder::compact() {
   const std::size_t held = buffered();
   for (std::size_t byte = 0; byte < held; ++byte) buffer_[byte] = buffer_[begin_ + byte];
