@@ -18,11 +18,11 @@
 //   retried with back-off when the channel says EAGAIN or ENOMEM.
 // - LEN/CTR framing has no checksum, so a garbage byte can look like a header and hold the decoder up: a partial
 //   frame still waiting after a quiet gap (20 ms) is dropped byte by byte and the frames behind it are found. But not
-//   on the channel when the partial frame's header carries the counter that follows the slave's last frame: that is
-//   the slave's next frame on its way, which a link may pause in the middle of for longer than the gap (QEMU's UART
-//   writes a byte at a time from a thread the host may deschedule for tens of milliseconds). Dropping it would lose
-//   it, and its remaining bytes, read as a header, could claim up to 64 KB and swallow the frames behind them,
-//   answers too, until the next quiet gap.
+//   on the channel when what has come of the partial frame's header agrees with the counter that follows the slave's
+//   last frame: that is the slave's next frame on its way, which a link may pause in the middle of, header included,
+//   for longer than the gap (QEMU's UART writes a byte at a time from a thread the host may deschedule for tens of
+//   milliseconds). Dropping it would lose it, and its remaining bytes, read as a header, could claim up to 64 KB and
+//   swallow the frames behind them, answers too, until the next quiet gap.
 
 #include <netinet/in.h>
 

@@ -86,9 +86,10 @@ class FrameDecoder {
   [[nodiscard]] std::size_t dropped_bytes() const { return dropped_; }
   // Bytes held for a frame that is not complete yet.
   [[nodiscard]] std::size_t buffered() const { return end_ - begin_; }
-  // Whether the bytes held begin a frame whose header is valid and carries `counter` (its low byte, for a byte
-  // counter): the frame a sender whose sequence is at `counter` is in the middle of, not garbage. False for framings
-  // without a counter.
+  // Whether the bytes held are the beginning of a frame that carries `counter` (its low byte, for a byte counter): as
+  // much of the header as has come agrees (a valid length, the counter's bytes; a part of the length alone agrees
+  // with any frame). The frame a sender whose sequence is at `counter` is in the middle of, rather than garbage.
+  // False when nothing is held, and for framings without a counter.
   [[nodiscard]] bool holds_start_of_frame(std::uint16_t counter) const;
 
   // Gives up on what is buffered: drops bytes one at a time, still delivering any valid frame that starts behind
