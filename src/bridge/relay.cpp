@@ -127,6 +127,7 @@ void Relay::close_channel(const std::string& reason) {
   channel_ = -1;
   channel_open_ = false;
   discard_partial_frame(from_channel_);
+  slave_next_counter_.reset();
   to_channel_.clear();
   session_.channel_reset();  // what the commands written or waiting still wait for will not come: counted there
   log("channel " + options_.channel_uri + " closed (" + reason + "); retrying");
@@ -247,6 +248,7 @@ void Relay::read_master() {
 }
 
 void Relay::forward_to_master(std::uint16_t counter, std::span<const std::uint8_t> packet) {
+  slave_next_counter_ = static_cast<std::uint16_t>(counter + 1U);
   const SessionTracker::Delivery delivery = session_.slave_packet(packet, std::chrono::steady_clock::now());
   if (!delivery.to_master || !has_master()) {
     ++frames_without_master_;
@@ -368,7 +370,8 @@ void Relay::release_held_commands() {
 void Relay::flush_stale_frames() {
   constexpr std::chrono::milliseconds gap{20};
   const auto now = std::chrono::steady_clock::now();
-  if (channel_ >= 0 && from_channel_.buffered() > 0 && now - channel_stalled_since_ >= gap) {
+  const bool slave_frame_on_its_way = slave_next_counter_ && from_channel_.holds_start_of_frame(*slave_next_counter_);
+  if (channel_ >= 0 && from_channel_.buffered() > 0 && now - channel_stalled_since_ >= gap && !slave_frame_on_its_way) {
     from_channel_.flush_stale(
         [this](std::uint16_t counter, std::span<const std::uint8_t> packet) { forward_to_master(counter, packet); });
   }

@@ -16,9 +16,13 @@
 // - Towards the master the queue is bounded: past the limit DAQ frames are dropped (counted), responses never. The
 //   channel is read whenever it has bytes; writes to it go in chunks of at most 496 bytes (an RPMsg payload) and are
 //   retried with back-off when the channel says EAGAIN or ENOMEM.
-// - LEN/CTR framing has no checksum, so a garbage byte can look like a header and hold the decoder up; since both
-//   ends write whole frames, a partial frame still waiting after a quiet gap (20 ms) is dropped byte by byte and the
-//   frames behind it are found.
+// - LEN/CTR framing has no checksum, so a garbage byte can look like a header and hold the decoder up: a partial
+//   frame still waiting after a quiet gap (20 ms) is dropped byte by byte and the frames behind it are found. But not
+//   on the channel when what has come of the partial frame's header agrees with the counter that follows the slave's
+//   last frame: that is the slave's next frame on its way, which a link may pause in the middle of, header included,
+//   for longer than the gap (QEMU's UART writes a byte at a time from a thread the host may deschedule for tens of
+//   milliseconds). Dropping it would lose it, and its remaining bytes, read as a header, could claim up to 64 KB and
+//   swallow the frames behind them, answers too, until the next quiet gap.
 
 #include <netinet/in.h>
 
@@ -147,7 +151,7 @@ class Relay {
   void release_held_commands();
   // A partial frame whose rest will never come (its link ended, or its datagram did): its bytes were garbage.
   void discard_partial_frame(xcp::FrameDecoder& decoder);
-  // Both ends send whole frames at once: a partial frame that waits longer than a gap was garbage.
+  // A partial frame that waits longer than a gap was garbage, unless it is the slave's next frame (see above).
   void flush_stale_frames();
 
   RelayOptions options_;
@@ -174,6 +178,8 @@ class Relay {
   // When each decoder last made progress while holding a partial frame (see flush_stale_frames()).
   std::chrono::steady_clock::time_point channel_stalled_since_{};
   std::chrono::steady_clock::time_point master_stalled_since_{};
+  // The counter of the frame the slave sends next (its last frame's + 1); none until a frame came on this channel.
+  std::optional<std::uint16_t> slave_next_counter_;
 
   std::vector<std::uint8_t> read_buffer_ = std::vector<std::uint8_t>(65536);  // allocated once: reads are frequent
   std::vector<std::uint8_t> channel_buffer_;

@@ -115,6 +115,20 @@ FrameDecoder::Frame FrameDecoder::next_frame() {
   return {};
 }
 
+bool FrameDecoder::holds_start_of_frame(std::uint16_t counter) const {
+  if (!framing_.has_counter() || buffered() == 0) return false;
+  const std::size_t length_size = framing_.header == FrameHeader::len_ctr_word ? 2 : 1;
+  const std::size_t held = buffered() < framing_.header_size() ? buffered() : framing_.header_size();
+  const std::uint8_t* const bytes = buffer_.data() + begin_;
+  // The counter's bytes that have come (little-endian, after the length) are the counter's.
+  for (std::size_t byte = length_size; byte < held; ++byte) {
+    if (bytes[byte] != static_cast<std::uint8_t>(counter >> (8U * (byte - length_size)))) return false;
+  }
+  if (held < length_size) return true;  // part of the length only: any frame may begin so
+  const std::size_t length = length_size == 2 ? static_cast<std::size_t>(bytes[0] | (bytes[1] << 8U)) : bytes[0];
+  return length != 0 && length <= max_packet_ && framing_.frame_size(length) <= buffer_.size();
+}
+
 void FrameDecoder::compact() {
   const std::size_t held = buffered();
   for (std::size_t byte = 0; byte < held; ++byte) buffer_[byte] = buffer_[begin_ + byte];

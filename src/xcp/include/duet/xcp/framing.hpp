@@ -40,6 +40,10 @@ struct Framing {
   [[nodiscard]] constexpr std::size_t frame_size(std::size_t packet_size) const {
     return header_size() + packet_size + tail_size(packet_size);
   }
+  // Whether the header carries the sender's counter (CTR), a byte or a word of it.
+  [[nodiscard]] constexpr bool has_counter() const {
+    return header == FrameHeader::len_ctr_byte || header == FrameHeader::len_ctr_word;
+  }
   [[nodiscard]] constexpr std::size_t max_packet() const {
     return header == FrameHeader::len_byte || header == FrameHeader::len_ctr_byte ||
                    header == FrameHeader::len_fill_byte
@@ -82,6 +86,11 @@ class FrameDecoder {
   [[nodiscard]] std::size_t dropped_bytes() const { return dropped_; }
   // Bytes held for a frame that is not complete yet.
   [[nodiscard]] std::size_t buffered() const { return end_ - begin_; }
+  // Whether the bytes held are the beginning of a frame that carries `counter` (its low byte, for a byte counter): as
+  // much of the header as has come agrees (a valid length, the counter's bytes; a part of the length alone agrees
+  // with any frame). The frame a sender whose sequence is at `counter` is in the middle of, rather than garbage.
+  // False when nothing is held, and for framings without a counter.
+  [[nodiscard]] bool holds_start_of_frame(std::uint16_t counter) const;
 
   // Gives up on what is buffered: drops bytes one at a time, still delivering any valid frame that starts behind
   // them, until nothing is left. For links that send whole frames at once: a partial frame that waits too long
