@@ -16,7 +16,8 @@ namespace {
 
 }  // namespace
 
-[[gnu::weak]] void plant_write(std::string_view resource, std::span<const bool>) { no_plant(resource); }
+// Pin writes wait in their buffer until a link sends them: without one, the image halts once the buffer is full.
+[[gnu::weak]] void plant_pin_writes_full() { no_plant(plant_pin_writes.pins[0]->resource_name()); }
 [[gnu::weak]] void plant_write(std::string_view resource, std::span<const std::uint8_t>) { no_plant(resource); }
 [[gnu::weak]] void plant_write(std::string_view resource, std::span<const std::uint16_t>) { no_plant(resource); }
 [[gnu::weak]] void plant_write(std::string_view resource, std::span<const float>) { no_plant(resource); }

@@ -2,6 +2,7 @@
 
 #include "duet/cortex_m/interrupts.hpp"
 #include "duet/cortex_m/semihosting.hpp"
+#include "duet/hardware/hardware.hpp"
 #include "duet/mps2_an386/board.hpp"
 #include "duet/mps2_an386/executive_port.hpp"
 
@@ -87,8 +88,7 @@ void PlantLink::write(std::string_view resource, std::span<const Element> values
   if (frame.empty()) return fail("a WRITE too long for the link's buffer: ", resource);
   send(frame);
 }
-// What hardware.hpp's calls write: a pin's level, an SPI transfer's bytes, an ADC sequence's length, a PWM duty.
-template void PlantLink::write(std::string_view, std::span<const bool>);
+// What hardware.hpp's calls write: an SPI transfer's bytes, an ADC sequence's length, a PWM duty (pins: send()).
 template void PlantLink::write(std::string_view, std::span<const std::uint8_t>);
 template void PlantLink::write(std::string_view, std::span<const std::uint16_t>);
 template void PlantLink::write(std::string_view, std::span<const float>);
@@ -160,10 +160,37 @@ bool PlantLink::raise(std::string_view name, LinkSection& section) {
   return false;
 }
 
+void PlantLink::send_pin_writes() {
+  const LinkSection section;
+  queue_pin_writes();
+}
+
 void PlantLink::send(std::span<const std::uint8_t> frame) {
+  queue_pin_writes();
+  queue(frame);
+}
+
+void PlantLink::queue(std::span<const std::uint8_t> frame) {
   static_assert(outgoing_capacity >= sizeof frame_, "a frame fits an empty buffer");
   if (outgoing_size_ + frame.size() > outgoing_capacity) flush();
   for (const std::uint8_t byte : frame) outgoing_[outgoing_size_++] = byte;
+}
+
+// Each as the WRITE of one bool, in the order written. Not in frame_: send() queues them before the frame there.
+// Under the link's section, which masks the interrupts whose tasks add to them.
+void PlantLink::queue_pin_writes() {
+  hardware::PlantPinWrites& writes = hardware::plant_pin_writes;
+  for (std::size_t k = 0; k < writes.count && ok(); ++k) {
+    std::uint8_t pin_frame[link::header_size + 64];
+    const std::span<const std::uint8_t> frame =
+        link::encode_write(pin_frame, writes.pins[k]->resource_name(), std::span<const bool>{&writes.levels[k], 1});
+    if (frame.empty()) {
+      fail("a pin's WRITE too long for the link's buffer: ", writes.pins[k]->resource_name());
+    } else {
+      queue(frame);
+    }
+  }
+  writes.count = 0;
 }
 
 void PlantLink::flush() {
@@ -218,8 +245,9 @@ bool PlantLink::expect(FrameKind kind) {
 void PlantLink::fail(std::string_view what, std::string_view detail) {
   if (!ok()) return;
   error_.append(what).append(detail);
-  // Tell the plant, so that it ends the session instead of waiting for a frame that will not come.
-  send(link::encode_error(frame_, error_.view()));
+  // Tell the plant, so that it ends the session instead of waiting for a frame that will not come (the pins written
+  // meanwhile no longer matter).
+  queue(link::encode_error(frame_, error_.view()));
   flush();
 }
 

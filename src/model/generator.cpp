@@ -27,15 +27,37 @@ std::string shortest(auto value) {
 
 std::string type_of(DataType type) { return std::string{cpp_type(type)}; }
 
-// Statements over the elements of a signal: once with index 0 for a scalar, in a loop otherwise.
+// Vectors up to this size are written element by element, as one would by hand: GCC then keeps their elements in
+// registers and drops the ones nothing reads (a loop over a local array keeps the array, every element computed and
+// stored: the robot's 7 raw values of which it uses 3, its 4 tuned settings compared through 3 arrays).
+constexpr std::size_t written_out_elements = 16;
+
+// Statements over the elements of a signal: one per element with its index for up to written_out_elements, in a loop
+// beyond.
 std::string for_each(std::size_t count, const std::string& body_with_i) {
-  if (count == 1) {
-    std::string body = body_with_i;
-    for (std::size_t at = body.find("[i]"); at != std::string::npos; at = body.find("[i]", at))
-      body.replace(at, 3, "[0]");
-    return "  " + body + "\n";
+  if (count > written_out_elements) {
+    return "  for (std::size_t i = 0; i < " + std::to_string(count) + "; ++i) " + body_with_i + "\n";
   }
-  return "  for (std::size_t i = 0; i < " + std::to_string(count) + "; ++i) " + body_with_i + "\n";
+  std::string text;
+  for (std::size_t index = 0; index < count; ++index) {
+    std::string body = body_with_i;
+    const std::string subscript = "[" + std::to_string(index) + "]";
+    for (std::size_t at = body.find("[i]"); at != std::string::npos; at = body.find("[i]", at + subscript.size()))
+      body.replace(at, 3, subscript);
+    text += "  " + body + "\n";
+  }
+  return text;
+}
+
+// Statements (lines ending in a newline) two spaces further in.
+std::string indented(const std::string& statements) {
+  std::string text;
+  for (std::size_t start = 0; start < statements.size();) {
+    const std::size_t end = statements.find('\n', start);
+    text += "  " + statements.substr(start, end - start + 1);
+    start = end + 1;
+  }
+  return text;
 }
 
 std::string compare_name(blocks::CompareOperator op) {
@@ -346,13 +368,7 @@ std::string Generator::guarded(const ProgramBlock& block, std::string statements
     condition +=
         (condition.empty() ? "" : " && ") + std::string{"duet::blocks::convert<bool>("} + element(signal, "0") + ")";
   }
-  std::string indented;
-  for (std::size_t start = 0; start < statements.size();) {
-    const std::size_t end = statements.find('\n', start);
-    indented += "  " + statements.substr(start, end - start + 1);
-    start = end + 1;
-  }
-  return "  if (" + condition + ") {\n" + indented + "  }\n";
+  return "  if (" + condition + ") {\n" + indented(statements) + "  }\n";
 }
 
 std::string Generator::output_phase(std::size_t index) const {
@@ -894,8 +910,8 @@ std::string Generator::rate_transition_output(const ProgramBlock& block) const {
                                ? member + ".read(" + release_flag(block, text) + ")"
                                : member + ".read()";
   if (n == 1) return text + "  " + element(y, "0") + " = " + read + ";\n";
-  return text + "  {\n    const auto& value = " + read + ";\n  " + for_each(n, element(y, "i") + " = value[i];") +
-         "  }\n";
+  return text + "  {\n    const auto& value = " + read + ";\n" +
+         indented(for_each(n, element(y, "i") + " = value[i];")) + "  }\n";
 }
 
 std::string Generator::rate_transition_update(const ProgramBlock& block) const {

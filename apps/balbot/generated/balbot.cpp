@@ -202,7 +202,10 @@ void initialize() {
   state.filter_kalman.x[1] = 0.0F;
   state.filter_kalman.p[0] = 1.0F;
   state.filter_kalman.p[3] = 1.0F;
-  for (std::size_t i = 0; i < 4; ++i) state.tuned_before[i].state = 0.0F;
+  state.tuned_before[0].state = 0.0F;
+  state.tuned_before[1].state = 0.0F;
+  state.tuned_before[2].state = 0.0F;
+  state.tuned_before[3].state = 0.0F;
   state.messages_before.state = std::uint32_t{0};
   state.source_before.state = false;
   state.controller = {0.0F, 0.0F};
@@ -230,27 +233,38 @@ void initialize() {
   state.lqr_to_step.reset(false);
   state.messages_to_step.reset(std::uint32_t{0});
   // device_reset/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.device_reset_bytes[i] = device_reset_bytes_value[i];
+  signals.device_reset_bytes[0] = device_reset_bytes_value[0];
+  signals.device_reset_bytes[1] = device_reset_bytes_value[1];
   // path_reset/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.path_reset_bytes[i] = path_reset_bytes_value[i];
+  signals.path_reset_bytes[0] = path_reset_bytes_value[0];
+  signals.path_reset_bytes[1] = path_reset_bytes_value[1];
   // wake/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.wake_bytes[i] = wake_bytes_value[i];
+  signals.wake_bytes[0] = wake_bytes_value[0];
+  signals.wake_bytes[1] = wake_bytes_value[1];
   // spi_only/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.spi_only_bytes[i] = spi_only_bytes_value[i];
+  signals.spi_only_bytes[0] = spi_only_bytes_value[0];
+  signals.spi_only_bytes[1] = spi_only_bytes_value[1];
   // sample_rate/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.sample_rate_bytes[i] = sample_rate_bytes_value[i];
+  signals.sample_rate_bytes[0] = sample_rate_bytes_value[0];
+  signals.sample_rate_bytes[1] = sample_rate_bytes_value[1];
   // gyro_filter/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.gyro_filter_bytes[i] = gyro_filter_bytes_value[i];
+  signals.gyro_filter_bytes[0] = gyro_filter_bytes_value[0];
+  signals.gyro_filter_bytes[1] = gyro_filter_bytes_value[1];
   // gyro_range/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.gyro_range_bytes[i] = gyro_range_bytes_value[i];
+  signals.gyro_range_bytes[0] = gyro_range_bytes_value[0];
+  signals.gyro_range_bytes[1] = gyro_range_bytes_value[1];
   // accel_range/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.accel_range_bytes[i] = accel_range_bytes_value[i];
+  signals.accel_range_bytes[0] = accel_range_bytes_value[0];
+  signals.accel_range_bytes[1] = accel_range_bytes_value[1];
   // accel_filter/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.accel_filter_bytes[i] = accel_filter_bytes_value[i];
+  signals.accel_filter_bytes[0] = accel_filter_bytes_value[0];
+  signals.accel_filter_bytes[1] = accel_filter_bytes_value[1];
   // interrupt_pin/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.interrupt_pin_bytes[i] = interrupt_pin_bytes_value[i];
+  signals.interrupt_pin_bytes[0] = interrupt_pin_bytes_value[0];
+  signals.interrupt_pin_bytes[1] = interrupt_pin_bytes_value[1];
   // interrupt_enable/bytes (Constant)
-  for (std::size_t i = 0; i < 2; ++i) signals.interrupt_enable_bytes[i] = interrupt_enable_bytes_value[i];
+  signals.interrupt_enable_bytes[0] = interrupt_enable_bytes_value[0];
+  signals.interrupt_enable_bytes[1] = interrupt_enable_bytes_value[1];
 }
 
 void terminate() {}
@@ -264,7 +278,21 @@ void step_rate_1() {
   std::uint8_t mpu_bytes[15]{};
   {
     const auto& value = state.mpu_bytes_to_step.read();
-    for (std::size_t i = 0; i < 15; ++i) mpu_bytes[i] = value[i];
+    mpu_bytes[0] = value[0];
+    mpu_bytes[1] = value[1];
+    mpu_bytes[2] = value[2];
+    mpu_bytes[3] = value[3];
+    mpu_bytes[4] = value[4];
+    mpu_bytes[5] = value[5];
+    mpu_bytes[6] = value[6];
+    mpu_bytes[7] = value[7];
+    mpu_bytes[8] = value[8];
+    mpu_bytes[9] = value[9];
+    mpu_bytes[10] = value[10];
+    mpu_bytes[11] = value[11];
+    mpu_bytes[12] = value[12];
+    mpu_bytes[13] = value[13];
+    mpu_bytes[14] = value[14];
   }
   // unpack (ByteUnpack)
   std::int16_t raw[7]{};
@@ -277,7 +305,13 @@ void step_rate_1() {
   raw[6] = duet::blocks::unpack<std::int16_t>(&mpu_bytes[13], duet::blocks::Endian::big);
   // to_single (Convert)
   float raw_single[7]{};
-  for (std::size_t i = 0; i < 7; ++i) raw_single[i] = duet::blocks::convert<float>(raw[i]);
+  raw_single[0] = duet::blocks::convert<float>(raw[0]);
+  raw_single[1] = duet::blocks::convert<float>(raw[1]);
+  raw_single[2] = duet::blocks::convert<float>(raw[2]);
+  raw_single[3] = duet::blocks::convert<float>(raw[3]);
+  raw_single[4] = duet::blocks::convert<float>(raw[4]);
+  raw_single[5] = duet::blocks::convert<float>(raw[5]);
+  raw_single[6] = duet::blocks::convert<float>(raw[6]);
   // split (Demux)
   float accel_x{};
   float accel_z{};
@@ -320,13 +354,22 @@ void step_rate_1() {
   tuned_settings[3] = lqr_number;
   // tuned_before (UnitDelay)
   float tuned_settings_before[4]{};
-  for (std::size_t i = 0; i < 4; ++i) tuned_settings_before[i] = state.tuned_before[i].output();
+  tuned_settings_before[0] = state.tuned_before[0].output();
+  tuned_settings_before[1] = state.tuned_before[1].output();
+  tuned_settings_before[2] = state.tuned_before[2].output();
+  tuned_settings_before[3] = state.tuned_before[3].output();
   // tuned_change (Sum)
   float tuned_change[4]{};
-  for (std::size_t i = 0; i < 4; ++i) tuned_change[i] = duet::blocks::subtract(tuned_settings[i], tuned_settings_before[i]);
+  tuned_change[0] = duet::blocks::subtract(tuned_settings[0], tuned_settings_before[0]);
+  tuned_change[1] = duet::blocks::subtract(tuned_settings[1], tuned_settings_before[1]);
+  tuned_change[2] = duet::blocks::subtract(tuned_settings[2], tuned_settings_before[2]);
+  tuned_change[3] = duet::blocks::subtract(tuned_settings[3], tuned_settings_before[3]);
   // tuned_moved (Compare)
   bool tuned_moved[4]{};
-  for (std::size_t i = 0; i < 4; ++i) tuned_moved[i] = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, tuned_change[i], 0.0F);
+  tuned_moved[0] = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, tuned_change[0], 0.0F);
+  tuned_moved[1] = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, tuned_change[1], 0.0F);
+  tuned_moved[2] = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, tuned_change[2], 0.0F);
+  tuned_moved[3] = duet::blocks::compare(duet::blocks::CompareOperator::not_equal, tuned_change[3], 0.0F);
   // moved (Demux)
   bool p_moved{};
   bool i_moved{};
@@ -444,7 +487,9 @@ void step_rate_1() {
   // gains_to_step (RateTransition)
   {
     const auto& value = state.gains_to_step.read();
-    for (std::size_t i = 0; i < 3; ++i) signals.linux_gains[i] = value[i];
+    signals.linux_gains[0] = value[0];
+    signals.linux_gains[1] = value[1];
+    signals.linux_gains[2] = value[2];
   }
   // linux_pid (Demux)
   float p_linux{};
@@ -523,7 +568,10 @@ void step_rate_1() {
   if (duet::blocks::convert<bool>(signals.sensor_ready)) {
     state.filter_kalman.update(measured, p.kalman_A, p.kalman_C, p.kalman_G, &p.kalman_Q);
   }
-  for (std::size_t i = 0; i < 4; ++i) state.tuned_before[i].update(tuned_settings[i]);
+  state.tuned_before[0].update(tuned_settings[0]);
+  state.tuned_before[1].update(tuned_settings[1]);
+  state.tuned_before[2].update(tuned_settings[2]);
+  state.tuned_before[3].update(tuned_settings[3]);
   state.messages_before.update(linux_messages);
   state.source_before.update(signals.gains_from);
   state.controller.update_clamped(signals.error, {signals.p_gain, signals.i_gain, signals.d_gain, p.N, -1.0F, 1.0F}, 0.001F, signals.stop);
@@ -709,13 +757,17 @@ void step_rate_10() {
   float gains_slow[3]{};
   {
     const auto& value = state.gains_to_ipc.read();
-    for (std::size_t i = 0; i < 3; ++i) gains_slow[i] = value[i];
+    gains_slow[0] = value[0];
+    gains_slow[1] = value[1];
+    gains_slow[2] = value[2];
   }
   // in_effect_to_ipc (RateTransition)
   std::uint8_t in_effect_slow[3]{};
   {
     const auto& value = state.in_effect_to_ipc.read();
-    for (std::size_t i = 0; i < 3; ++i) in_effect_slow[i] = value[i];
+    in_effect_slow[0] = value[0];
+    in_effect_slow[1] = value[1];
+    in_effect_slow[2] = value[2];
   }
   // pack (BytePack)
   std::uint8_t message[27]{};
@@ -739,7 +791,21 @@ void step_rate_10() {
 void task_EXTI8() {
   // data_ready/request (Constant)
   std::uint8_t data_ready_request[15]{};
-  for (std::size_t i = 0; i < 15; ++i) data_ready_request[i] = data_ready_request_value[i];
+  data_ready_request[0] = data_ready_request_value[0];
+  data_ready_request[1] = data_ready_request_value[1];
+  data_ready_request[2] = data_ready_request_value[2];
+  data_ready_request[3] = data_ready_request_value[3];
+  data_ready_request[4] = data_ready_request_value[4];
+  data_ready_request[5] = data_ready_request_value[5];
+  data_ready_request[6] = data_ready_request_value[6];
+  data_ready_request[7] = data_ready_request_value[7];
+  data_ready_request[8] = data_ready_request_value[8];
+  data_ready_request[9] = data_ready_request_value[9];
+  data_ready_request[10] = data_ready_request_value[10];
+  data_ready_request[11] = data_ready_request_value[11];
+  data_ready_request[12] = data_ready_request_value[12];
+  data_ready_request[13] = data_ready_request_value[13];
+  data_ready_request[14] = data_ready_request_value[14];
   // data_ready/send (SpiDma)
   {
     const std::uint8_t written[] = {data_ready_request[0], data_ready_request[1], data_ready_request[2], data_ready_request[3], data_ready_request[4], data_ready_request[5], data_ready_request[6], data_ready_request[7], data_ready_request[8], data_ready_request[9], data_ready_request[10], data_ready_request[11], data_ready_request[12], data_ready_request[13], data_ready_request[14]};

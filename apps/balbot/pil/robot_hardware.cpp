@@ -10,9 +10,7 @@
 
 namespace duet::hardware {
 
-void plant_write(std::string_view resource, std::span<const bool> levels) {
-  balbot::pil::plant_link().write(resource, levels);
-}
+void plant_pin_writes_full() { balbot::pil::plant_link().send_pin_writes(); }
 void plant_write(std::string_view resource, std::span<const std::uint8_t> bytes) {
   balbot::pil::plant_link().write(resource, bytes);
 }

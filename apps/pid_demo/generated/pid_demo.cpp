@@ -109,7 +109,8 @@ void initialize() {
   state.motor_logic.reversals = std::uint32_t{0};
   state.stop_events_trigger_edge.previous = false;
   state.stop_events_tally.count = std::uint16_t{1};
-  for (std::size_t i = 0; i < 2; ++i) state.body[i].state = body_initial[i];
+  state.body[0].state = body_initial[0];
+  state.body[1].state = body_initial[1];
   state.error_to_supervision.reset(0.0F);
   state.duty_to_supervision.reset(0.0F);
   state.stop_to_supervision.reset(false);
@@ -138,7 +139,8 @@ void step_rate_1() {
   signals.reference = duet::blocks::element_at(std::span<const float>{p.profile, 10}, index);
   // body (UnitDelay)
   float x[2]{};
-  for (std::size_t i = 0; i < 2; ++i) x[i] = state.body[i].output();
+  x[0] = state.body[0].output();
+  x[1] = state.body[1].output();
   // free (MatrixMultiply)
   float a_x[2]{};
   duet::blocks::matrix_multiply(p.A, x, a_x, 2, 2, 1);
@@ -217,13 +219,15 @@ void step_rate_1() {
   duet::blocks::matrix_multiply(p.B, u, b_u, 2, 2, 1);
   // dynamics (Sum)
   float x_next[2]{};
-  for (std::size_t i = 0; i < 2; ++i) x_next[i] = duet::blocks::add(a_x[i], b_u[i]);
+  x_next[0] = duet::blocks::add(a_x[0], b_u[0]);
+  x_next[1] = duet::blocks::add(a_x[1], b_u[1]);
   state.clock.update(std::uint32_t{4999});
   state.pid.update(signals.error, {p.Kp, p.Ki, p.Kd, p.N, -1.0F, 1.0F}, 0.001F);
   if (duet::blocks::convert<bool>(stop_events_triggered)) {
     state.stop_events_tally.update(std::uint16_t{65535});
   }
-  for (std::size_t i = 0; i < 2; ++i) state.body[i].update(x_next[i]);
+  state.body[0].update(x_next[0]);
+  state.body[1].update(x_next[1]);
   state.error_to_supervision.write(signals.error, release_0_every_10);
   state.duty_to_supervision.write(signals.duty, release_0_every_10);
   state.stop_to_supervision.write(signals.stop, release_0_every_10);

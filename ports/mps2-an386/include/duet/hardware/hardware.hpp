@@ -12,6 +12,7 @@
 #include <span>
 #include <string_view>
 
+#include "duet/cortex_m/interrupts.hpp"
 #include "duet/cortex_m/registers.hpp"
 #include "duet/hardware/resources.hpp"
 #include "duet/mps2_an386/board.hpp"
@@ -66,10 +67,22 @@ consteval std::uint16_t interrupt_number(std::string_view name) {
   return static_cast<std::uint16_t>(detail::no_such_pin_on_mps2_an386().mask);
 }
 
-// The plant's resources by the plant's names, each in the type its typed call below moves: what an image with a plant
-// link defines (apps/balbot/pil: PlantLink's WRITE and READ). An image without one that reaches them halts with a
-// message saying so (no_plant.cpp).
-void plant_write(std::string_view resource, std::span<const bool> levels);
+// The plant's pins as their levels are written, in order, until the plant link next talks to the plant and sends them
+// as WRITE frames before anything else (PlantLink::send_pin_writes): a pin write is a few stores, as a board's is one
+// to its GPIO's output register, and it reaches the plant no later than a WRITE frame would (those too wait for the
+// link's next exchange). Interrupt tasks write pins too, so an entry is added with interrupts masked.
+struct PlantPinWrites {
+  static constexpr std::size_t capacity = 16;
+  const Pin* pins[capacity];
+  bool levels[capacity];
+  std::size_t count;
+};
+inline PlantPinWrites plant_pin_writes{};
+
+// The plant's resources by the plant's names, each in the type its typed call below moves, and the pin writes once
+// they fill their buffer: what an image with a plant link defines (apps/balbot/pil: PlantLink's WRITE and READ). An
+// image without one that reaches them halts with a message saying so (no_plant.cpp).
+void plant_pin_writes_full();
 void plant_write(std::string_view resource, std::span<const std::uint8_t> bytes);
 void plant_write(std::string_view resource, std::span<const std::uint16_t> counts);
 void plant_write(std::string_view resource, std::span<const float> values);
@@ -101,7 +114,14 @@ inline void gpio_write(const Pin& pin, bool level) {
     leds = level ? (leds | pin.mask) : (leds & ~pin.mask);
     return;
   }
-  plant_write(pin.resource_name(), std::span<const bool>{&level, 1});
+  const std::uint32_t saved_primask = cortex_m::mask_interrupts();
+  PlantPinWrites& writes = plant_pin_writes;
+  if (writes.count == PlantPinWrites::capacity) [[unlikely]]
+    plant_pin_writes_full();
+  writes.pins[writes.count] = &pin;
+  writes.levels[writes.count] = level;
+  ++writes.count;
+  cortex_m::restore_interrupts(saved_primask);
 }
 
 inline bool gpio_read(const Pin& pin) {

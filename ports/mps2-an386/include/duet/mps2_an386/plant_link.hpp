@@ -47,6 +47,10 @@ class PlantLink {
   template <typename Element>
   void read(std::string_view resource, std::span<Element> values);
 
+  // Sends the pins written since the link last talked to the plant (duet/hardware/hardware.hpp's plant_pin_writes),
+  // as when it next does: for when they fill their buffer.
+  void send_pin_writes();
+
   // Moves the plant to base tick `tick` (its time is the plant's to compute: tick x the base period HELLO gave).
   // Each interrupt it raises on the way pends that interrupt's line (board.hpp's plant_interrupts) and lets it run,
   // with time running, before the plant goes on: the task must be more urgent than the caller (the base tick's
@@ -70,8 +74,10 @@ class PlantLink {
   static constexpr std::size_t outgoing_capacity = 2048;
 
   class LinkSection;
-  // Queues a frame; it goes out with the next flush().
+  // Queues the pins written meanwhile, then a frame; they go out with the next flush().
   void send(std::span<const std::uint8_t> frame);
+  void queue(std::span<const std::uint8_t> frame);
+  void queue_pin_writes();
   void flush();
   // Flushes, then waits for the plant's next frame; false (and the session failed) on garbage, an ERROR or the
   // pipe's end.

@@ -21,7 +21,8 @@
 // SteadyStateKalmanFilter is the same filter with a constant gain K (NX x NY) computed beforehand (e.g. on the host
 // with the discrete Riccati equation): steps 2 and 4 only, no covariance.
 // Preconditions: arrays hold the sizes above; estimate overlaps no input. Not interrupt-safe: one task owns a filter.
-// The work is done by kernels in detail:: with run-time sizes (the simulation's interpreter calls them directly).
+// The work is done by kernels in detail:: with run-time sizes (the simulation's interpreter calls them directly); their
+// loops are unrolled for the fixed sizes of generated code, as matrix.hpp's are.
 
 #include <array>
 #include <cstddef>
@@ -56,8 +57,10 @@ constexpr void kalman_gain(const T* p, const T* c, const T* r, std::size_t nx, s
   matrix_transpose(c, c_transposed, ny, nx);
   matrix_multiply(p, c_transposed, p_c_transposed, nx, nx, ny);
   matrix_multiply(c, p_c_transposed, innovation_covariance, ny, nx, ny);
+#pragma GCC unroll 8
   for (std::size_t i = 0; i < ny * ny; ++i) innovation_covariance[i] = add(innovation_covariance[i], r[i]);
   if (!matrix_inverse(innovation_covariance, inverse, ny, inverse_scratch)) {
+#pragma GCC unroll 8
     for (std::size_t i = 0; i < nx * ny; ++i) gain[i] = T{0};  // K = 0
     return;
   }
@@ -71,8 +74,10 @@ constexpr void kalman_correct(const T* x, const T* y, const T* c, const T* gain_
   T* innovation = scratch;
   T* correction = scratch + ny;
   matrix_multiply(c, x, innovation, ny, nx, 1);
+#pragma GCC unroll 8
   for (std::size_t i = 0; i < ny; ++i) innovation[i] = subtract(y[i], innovation[i]);
   matrix_multiply(gain_k, innovation, correction, nx, ny, 1);
+#pragma GCC unroll 8
   for (std::size_t i = 0; i < nx; ++i) estimate[i] = add(x[i], correction[i]);
 }
 
@@ -80,6 +85,7 @@ constexpr void kalman_correct(const T* x, const T* y, const T* c, const T* gain_
 template <Floating T>
 constexpr void kalman_predict_state(const T* estimate, const T* u, std::size_t nu, const T* a, const T* b,
                                     std::size_t nx, T* x) {
+#pragma GCC unroll 8
   for (std::size_t i = 0; i < nx; ++i) x[i] = row_times_vector(row_times_vector(a, i, estimate, nx), b, i, u, nu);
 }
 
@@ -110,7 +116,9 @@ constexpr void kalman_update(T* x, T* p, std::size_t nx, std::size_t ny, std::si
 
   // P[k|k] = (I - K C) P[k|k-1]
   matrix_multiply(gain, c, reduction, nx, ny, nx);
+#pragma GCC unroll 8
   for (std::size_t i = 0; i < nx; ++i) {
+#pragma GCC unroll 8
     for (std::size_t j = 0; j < nx; ++j) reduction[i * nx + j] = subtract(i == j ? T{1} : T{0}, reduction[i * nx + j]);
   }
   matrix_multiply(reduction, p, p_filtered, nx, nx, nx);
@@ -124,6 +132,7 @@ constexpr void kalman_update(T* x, T* p, std::size_t nx, std::size_t ny, std::si
   matrix_transpose(g, g_transposed, nx, nw);
   matrix_multiply(g, q, g_q, nx, nw, nw);
   matrix_multiply(g_q, g_transposed, process_noise, nx, nw, nx);
+#pragma GCC unroll 8
   for (std::size_t i = 0; i < nx * nx; ++i) p[i] = add(propagated[i], process_noise[i]);
 }
 
@@ -161,7 +170,10 @@ struct KalmanFilter {
 
   // x, p become x[k+1|k], P[k+1|k], with the K output() computed in this step (a step calls output() first).
   constexpr void update(const T* y, const T* a, const T* c, const T* g, const T* q) {
-    update(y, nullptr, 0, a, nullptr, c, g, q);
+    // The kernel itself rather than the overload below: through it the count of inputs, 0, stayed a run-time value
+    // and GCC kept a loop over B u that never runs.
+    std::array<T, scratch_size> scratch;  // the kernels write before they read: no zeroing
+    detail::kalman_update<T>(x, p, NX, NY, NW, y, nullptr, 0, a, nullptr, c, g, q, gain, scratch.data());
   }
 
   // The same with an input: x[k+1|k] = A x[k|k] + B u, for u (nu values) and B (NX x nu).

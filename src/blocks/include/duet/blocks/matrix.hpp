@@ -16,11 +16,17 @@ namespace duet::blocks {
 // addition and differs only in the sign of a zero sum). inner == 0 gives a zero matrix.
 // Preconditions: the arrays hold at least those many elements, and y overlaps neither a nor b (y is written while a
 // and b are still being read).
+// The loops here and in the kernels built on them (matrix_inverse.hpp, kalman.hpp) are unrolled (#pragma GCC unroll):
+// where the sizes are known at compile time, in generated code's fixed-size blocks, the products become straight-line
+// code on registers; the interpreter's run-time sizes keep loops. Unrolling changes no operation or its order.
 template <Number T>
 constexpr void matrix_multiply(const T* a, const T* b, T* y, std::size_t rows, std::size_t inner, std::size_t columns) {
+#pragma GCC unroll 8
   for (std::size_t r = 0; r < rows; ++r) {
+#pragma GCC unroll 8
     for (std::size_t c = 0; c < columns; ++c) {
       T acc = inner == 0 ? T{0} : multiply(a[r * inner], b[c]);
+#pragma GCC unroll 8
       for (std::size_t k = 1; k < inner; ++k) acc = add(acc, multiply(a[r * inner + k], b[k * columns + c]));
       y[r * columns + c] = acc;
     }
@@ -31,7 +37,9 @@ constexpr void matrix_multiply(const T* a, const T* b, T* y, std::size_t rows, s
 // so it computes nothing that could round. Precondition: y does not overlap a.
 template <Element T>
 constexpr void matrix_transpose(const T* a, T* y, std::size_t rows, std::size_t columns) {
+#pragma GCC unroll 8
   for (std::size_t r = 0; r < rows; ++r) {
+#pragma GCC unroll 8
     for (std::size_t c = 0; c < columns; ++c) y[c * rows + r] = a[r * columns + c];
   }
 }
