@@ -92,7 +92,7 @@ class HandMadeFile {
   }
   std::uint64_t data_block(const std::vector<std::uint8_t>& records) {
     const std::uint64_t at = block("##DT", 0, records.size());
-    std::memcpy(bytes.data() + at + 24, records.data(), records.size());
+    if (!records.empty()) std::memcpy(bytes.data() + at + 24, records.data(), records.size());
     return at;
   }
 

@@ -168,7 +168,7 @@ struct Reader::State {
 
   Result<GroupInfo> read_group(BlockReader& blocks, const Block& block) {
     const std::string where = blocks.here(block.offset) + ": ##CG block";
-    const std::uint64_t data = 8ull * (block.links.size() - format::cg::links);  // 4.2's remote master link shifts it
+    const std::uint64_t data = 0;  // after all links: 4.2's seventh (the remote master) moves it, as any link does
     if (block.links.size() < format::cg::links || block.data.size() < data + format::cg::data_size)
       return Failure{where + " too short for its fields (" + std::to_string(block.length) + " bytes)"};
     GroupInfo group;
