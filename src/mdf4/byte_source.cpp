@@ -44,7 +44,7 @@ class MemorySource final : public ByteSource {
   std::uint64_t size() const override { return bytes_.size(); }
   const std::string& name() const override { return name_; }
   bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const override {
-    std::memcpy(into, bytes_.data() + offset, count);
+    if (count > 0) std::memcpy(into, bytes_.data() + offset, count);
     return true;
   }
 

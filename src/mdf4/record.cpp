@@ -30,6 +30,7 @@ double to_double(const Number& number) {
 
 Number Record::value(std::size_t index) const {
   const ChannelInfo& channel = group_.channels[index];
+  if (!channel.decoded) return std::uint64_t{0};
   if (channel.role == ChannelInfo::Role::virtual_master || channel.bit_count == 0) return index_;
   const std::uint8_t* at = bytes_.data() + channel.byte_offset;
   const std::uint32_t bytes = (channel.bit_offset + channel.bit_count + 7) / 8;
@@ -83,7 +84,7 @@ Physical Record::physical(std::size_t index) const {
 }
 
 double Record::time() const {
-  if (!group_.master) return std::numeric_limits<double>::quiet_NaN();
+  if (!group_.master || !group_.channels[*group_.master].decoded) return std::numeric_limits<double>::quiet_NaN();
   const Physical time = physical(*group_.master);
   if (const double* converted = std::get_if<double>(&time)) return *converted;
   if (const Number* number = std::get_if<Number>(&time)) return to_double(*number);

@@ -72,7 +72,7 @@ class Record {
  public:
   Record(const GroupInfo& group, std::span<const std::uint8_t> bytes, std::uint64_t index)
       : group_(group), bytes_(bytes), index_(index) {}
-  // Precondition: channel < channels.size() and the channel is decoded.
+  // Precondition: channel < channels.size(). A channel that is not decoded reads 0.
   Number value(std::size_t channel) const;
   bool valid(std::size_t channel) const;
   Physical physical(std::size_t channel) const;
