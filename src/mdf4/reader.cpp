@@ -435,49 +435,108 @@ Result<Reader> Reader::from_bytes(std::vector<std::uint8_t> bytes, std::string n
 
 const FileInfo& Reader::info() const { return state_->info; }
 
-Status Reader::for_each_record(std::size_t group_index, const std::function<void(const Record&)>& visit) const {
-  const FileInfo& info = state_->info;
-  if (group_index >= info.groups.size())
-    return Failure{state_->name() + ": there is no group " + std::to_string(group_index)};
-  const GroupInfo& group = info.groups[group_index];
-  const DataGroup& data_group = state_->data_groups[state_->data_group_of[group_index]];
+struct RecordCursor::State {
+  const ByteSource& source;
+  const FileInfo& info;
+  const GroupInfo& group;
+  const DataGroup& data_group;
+  DataStream stream;
+  std::uint64_t index = 0;
+  std::string error;
+};
+
+RecordCursor::RecordCursor(std::unique_ptr<State> state) : state_(std::move(state)) {}
+RecordCursor::RecordCursor(RecordCursor&&) noexcept = default;
+RecordCursor& RecordCursor::operator=(RecordCursor&&) noexcept = default;
+RecordCursor::~RecordCursor() = default;
+const std::string& RecordCursor::error() const { return state_->error; }
+
+std::optional<Record> RecordCursor::next() {
+  State& state = *state_;
+  const GroupInfo& group = state.group;
   const std::uint64_t record_bytes = std::uint64_t{group.data_bytes} + group.invalidation_bytes;
-  DataStream stream{*state_->source, data_group.pieces};
-  for (std::uint64_t index = 0; index < group.samples;) {
-    if (data_group.record_id_size != 0) {
-      const std::span<const std::uint8_t> id_bytes = stream.next(data_group.record_id_size);
+  while (state.index < group.samples) {
+    if (state.data_group.record_id_size != 0) {
+      const std::span<const std::uint8_t> id_bytes = state.stream.next(state.data_group.record_id_size);
       if (id_bytes.empty()) break;
       std::uint64_t id = 0;
       std::memcpy(&id, id_bytes.data(), id_bytes.size());
       if (id != group.record_id) {
-        // Counted on opening: every id belongs to a group of this data group.
-        for (const std::size_t other : data_group.groups) {
-          if (info.groups[other].record_id == id)
-            (void)stream.next(std::uint64_t{info.groups[other].data_bytes} + info.groups[other].invalidation_bytes);
+        // Counted on opening: every id belongs to a group of this data group, and each is read past.
+        for (const std::size_t other : state.data_group.groups) {
+          const GroupInfo& other_group = state.info.groups[other];
+          if (other_group.record_id == id)
+            (void)state.stream.next(std::uint64_t{other_group.data_bytes} + other_group.invalidation_bytes);
         }
         continue;
       }
     }
-    const std::span<const std::uint8_t> bytes = stream.next(record_bytes);
+    const std::span<const std::uint8_t> bytes = state.stream.next(record_bytes);
     if (bytes.empty()) break;
-    visit(Record{group, bytes, index});
-    ++index;
+    return Record{group, bytes, state.index++};
   }
-  if (stream.failed())
-    return Failure{state_->name() + ": cannot read the data of group " + std::to_string(group_index)};
+  if (state.stream.failed() && state.error.empty())
+    state.error = state.source.name() + ": cannot read the data of the ##DG at " + hex(state.data_group.offset);
+  return std::nullopt;
+}
+
+RecordCursor Reader::records(std::size_t group) const {
+  const DataGroup& data_group = state_->data_groups[state_->data_group_of[group]];
+  return RecordCursor{std::make_unique<RecordCursor::State>(
+      RecordCursor::State{.source = *state_->source,
+                          .info = state_->info,
+                          .group = state_->info.groups[group],
+                          .data_group = data_group,
+                          .stream = DataStream{*state_->source, data_group.pieces},
+                          .index = 0,
+                          .error = {}})};
+}
+
+Status Reader::for_each_record(std::size_t group, const std::function<void(const Record&)>& visit) const {
+  if (group >= state_->info.groups.size())
+    return Failure{state_->name() + ": there is no group " + std::to_string(group)};
+  RecordCursor cursor = records(group);
+  while (const std::optional<Record> record = cursor.next()) visit(*record);
+  if (!cursor.error().empty()) return Failure{cursor.error()};
   return done();
 }
 
 Result<std::optional<std::pair<double, double>>> Reader::time_span(std::size_t group) const {
-  std::optional<std::pair<double, double>> span;
-  if (group >= info().groups.size() || !info().groups[group].master) return std::optional<std::pair<double, double>>{};
-  Status read = for_each_record(group, [&](const Record& record) {
-    const double time = record.time();
-    if (!span) span = std::pair{time, time};
-    span->second = time;
-  });
-  if (!read) return Failure{read.error()};
-  return span;
+  using Span = std::optional<std::pair<double, double>>;
+  if (group >= info().groups.size() || !info().groups[group].master || info().groups[group].samples == 0) return Span{};
+  const GroupInfo& info_group = info().groups[group];
+  const DataGroup& data_group = state_->data_groups[state_->data_group_of[group]];
+  if (data_group.record_id_size != 0) {  // records with ids: only a walk finds the last
+    Span span;
+    Status read = for_each_record(group, [&](const Record& record) {
+      if (!span) span = std::pair{record.time(), record.time()};
+      span->second = record.time();
+    });
+    if (!read) return Failure{read.error()};
+    return span;
+  }
+  // Sorted: the first record, and the last one found from the blocks' sizes.
+  const std::uint64_t record_bytes = std::uint64_t{info_group.data_bytes} + info_group.invalidation_bytes;
+  std::vector<std::uint8_t> bytes(record_bytes);
+  const auto time_of = [&](std::uint64_t index) -> std::optional<double> {
+    std::uint64_t skip = index * record_bytes, filled = 0;
+    for (const DataPiece& piece : data_group.pieces) {
+      if (skip >= piece.size) {
+        skip -= piece.size;
+        continue;
+      }
+      const std::uint64_t take = std::min(piece.size - skip, record_bytes - filled);
+      if (!state_->source->read(piece.offset + skip, bytes.data() + filled, take)) return std::nullopt;
+      filled += take;
+      skip = 0;
+      if (filled == record_bytes) return Record{info_group, bytes, index}.time();
+    }
+    return std::nullopt;
+  };
+  const std::optional<double> first = time_of(0), last = time_of(info_group.samples - 1);
+  if (!first || !last)
+    return Failure{state_->name() + ": cannot read the data of the ##DG at " + hex(data_group.offset)};
+  return Span{std::pair{*first, *last}};
 }
 
 }  // namespace duet::mdf4

@@ -29,7 +29,7 @@ double to_double(const Number& number) {
 }
 
 Number Record::value(std::size_t index) const {
-  const ChannelInfo& channel = group_.channels[index];
+  const ChannelInfo& channel = group_->channels[index];
   if (!channel.decoded) return std::uint64_t{0};
   if (channel.role == ChannelInfo::Role::virtual_master || channel.bit_count == 0) return index_;
   const std::uint8_t* at = bytes_.data() + channel.byte_offset;
@@ -59,15 +59,15 @@ Number Record::value(std::size_t index) const {
 }
 
 bool Record::valid(std::size_t index) const {
-  const std::optional<std::uint32_t>& bit = group_.channels[index].invalidation_bit;
+  const std::optional<std::uint32_t>& bit = group_->channels[index].invalidation_bit;
   if (!bit) return true;
   if (*bit == std::numeric_limits<std::uint32_t>::max()) return false;  // the channel says all are invalid
-  return (bytes_[group_.data_bytes + *bit / 8] >> (*bit % 8) & 1) == 0;
+  return (bytes_[group_->data_bytes + *bit / 8] >> (*bit % 8) & 1) == 0;
 }
 
 Physical Record::physical(std::size_t index) const {
   const Number stored = value(index);
-  const Conversion& conversion = group_.channels[index].conversion;
+  const Conversion& conversion = group_->channels[index].conversion;
   switch (conversion.kind) {
     case Conversion::Kind::linear: return conversion.factor * to_double(stored) + conversion.offset;
     case Conversion::Kind::value_to_text: {
@@ -84,8 +84,8 @@ Physical Record::physical(std::size_t index) const {
 }
 
 double Record::time() const {
-  if (!group_.master || !group_.channels[*group_.master].decoded) return std::numeric_limits<double>::quiet_NaN();
-  const Physical time = physical(*group_.master);
+  if (!group_->master || !group_->channels[*group_->master].decoded) return std::numeric_limits<double>::quiet_NaN();
+  const Physical time = physical(*group_->master);
   if (const double* converted = std::get_if<double>(&time)) return *converted;
   if (const Number* number = std::get_if<Number>(&time)) return to_double(*number);
   return std::numeric_limits<double>::quiet_NaN();

@@ -71,7 +71,7 @@ struct FileInfo {
 class Record {
  public:
   Record(const GroupInfo& group, std::span<const std::uint8_t> bytes, std::uint64_t index)
-      : group_(group), bytes_(bytes), index_(index) {}
+      : group_(&group), bytes_(bytes), index_(index) {}
   // Precondition: channel < channels.size(). A channel that is not decoded reads 0.
   Number value(std::size_t channel) const;
   bool valid(std::size_t channel) const;
@@ -81,9 +81,26 @@ class Record {
   std::uint64_t index() const { return index_; }
 
  private:
-  const GroupInfo& group_;
+  const GroupInfo* group_;
   std::span<const std::uint8_t> bytes_;  // without the record id
   std::uint64_t index_;
+};
+
+// A group's records one at a time, in order, so that several groups can be read side by side.
+class RecordCursor {
+ public:
+  RecordCursor(RecordCursor&&) noexcept;
+  RecordCursor& operator=(RecordCursor&&) noexcept;
+  ~RecordCursor();
+  // The next record, valid until the next call; none at the end, or if reading failed (error() then says why).
+  std::optional<Record> next();
+  const std::string& error() const;
+
+ private:
+  friend class Reader;
+  struct State;
+  explicit RecordCursor(std::unique_ptr<State> state);
+  std::unique_ptr<State> state_;
 };
 
 class Reader {
@@ -97,6 +114,8 @@ class Reader {
   ~Reader();
 
   const FileInfo& info() const;
+  // Precondition: group < info().groups.size().
+  RecordCursor records(std::size_t group) const;
   // Every record of `group` in order, through `visit`; fails naming the block if the data is damaged.
   Status for_each_record(std::size_t group, const std::function<void(const Record&)>& visit) const;
   // The first and last master values, if the group has a master and samples.
