@@ -1,6 +1,7 @@
 #pragma once
 // Little-endian integers and doubles into and out of byte buffers: MDF 4's byte order, also the PC's.
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -29,13 +30,15 @@ class ByteBuffer {
  public:
   std::uint64_t size() const { return bytes_.size(); }
   std::vector<std::uint8_t>& bytes() { return bytes_; }
-  void append_text(std::string_view text) { bytes_.insert(bytes_.end(), text.begin(), text.end()); }
-  void append_zeros(std::uint64_t count) { bytes_.resize(bytes_.size() + count, 0); }
+  void append_text(std::string_view text) {
+    if (!text.empty()) std::memcpy(grow(text.size()), text.data(), text.size());
+  }
+  void append_zeros(std::uint64_t count) {
+    if (count > 0) std::memset(grow(count), 0, count);
+  }
   template <typename T>
   void append(T value) {
-    const std::size_t at = bytes_.size();
-    bytes_.resize(at + sizeof value);
-    store(bytes_.data() + at, value);
+    store(grow(sizeof value), value);
   }
   template <typename T>
   void put(std::uint64_t at, T value) {
@@ -44,6 +47,13 @@ class ByteBuffer {
   void align(std::uint64_t alignment) { append_zeros((alignment - size() % alignment) % alignment); }
 
  private:
+  // Room for `count` more bytes at the end, uninitialised as far as callers are concerned.
+  std::uint8_t* grow(std::uint64_t count) {
+    const std::size_t at = bytes_.size();
+    if (bytes_.capacity() < at + count) bytes_.reserve(std::max<std::size_t>(2 * bytes_.capacity(), at + count));
+    bytes_.resize(at + count);
+    return bytes_.data() + at;
+  }
   std::vector<std::uint8_t> bytes_;
 };
 

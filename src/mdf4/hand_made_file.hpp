@@ -54,8 +54,9 @@ class HandMadeFile {
     return value;
   }
   void append_raw(const void* data, std::size_t size) {
-    const auto* first = static_cast<const std::uint8_t*>(data);
-    bytes.insert(bytes.end(), first, first + size);
+    const std::size_t at = bytes.size();
+    bytes.resize(at + size);
+    if (size > 0) std::memcpy(bytes.data() + at, data, size);
   }
 
   // HD at 64 (6 links, 104 bytes), returning its offset.
@@ -99,7 +100,11 @@ class HandMadeFile {
   std::vector<std::uint8_t> bytes;
 
  private:
-  void text(std::string_view content) { bytes.insert(bytes.end(), content.begin(), content.end()); }
+  void text(std::string_view content) {
+    const std::size_t at = bytes.size();
+    bytes.resize(at + content.size());
+    std::memcpy(bytes.data() + at, content.data(), content.size());
+  }
 };
 
 // Records from values laid out by hand.
@@ -107,8 +112,9 @@ class RecordBytes {
  public:
   template <typename T>
   RecordBytes& add(T value) {
-    const auto* first = reinterpret_cast<const std::uint8_t*>(&value);
-    bytes.insert(bytes.end(), first, first + sizeof value);
+    const std::size_t at = bytes.size();
+    bytes.resize(at + sizeof value);
+    std::memcpy(bytes.data() + at, &value, sizeof value);
     return *this;
   }
   std::vector<std::uint8_t> bytes;

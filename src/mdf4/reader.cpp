@@ -349,6 +349,7 @@ struct Reader::State {
         if (Status claimed = blocks.claim_data(block); !claimed) return claimed;
         group.pieces.push_back({block.offset + format::header_size, block.length - format::header_size});
       }
+      group.blocks = {};  // only the pieces are kept: 16 bytes per data block
       if (Status counted = count_samples(blocks, group); !counted) return counted;
     }
     return done();

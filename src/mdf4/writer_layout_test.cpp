@@ -217,5 +217,33 @@ TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   EXPECT_LT(records, data);                            // the list follows the block it lists
 }
 
+// What bounds the writer's memory: no data block larger than a fragment and a record, each listed by its own DL,
+// chained in order, the offsets counting the group's bytes before it.
+TEST(Mdf4Layout, DataInBoundedFragmentsEachListedInTheChain) {
+  const TemporaryFile file{"fragments.mf4"};
+  {
+    auto writer = Writer::create(file.path(), one_group(), WriterOptions{.fragment_bytes = 1000});
+    ASSERT_TRUE(writer);
+    for (int sample = 0; sample < 10'000; ++sample)
+      ASSERT_TRUE(writer.value().append(0, sample, std::vector<Value>{static_cast<std::int16_t>(sample)}));
+  }
+  const WrittenFile bytes{file.bytes()};
+  const std::uint64_t group = bytes.at<std::uint64_t>(64 + 24);
+  std::uint64_t records = 0, lists = 0;
+  for (std::uint64_t list = bytes.at<std::uint64_t>(group + 40); list != 0; list = bytes.at<std::uint64_t>(list + 24)) {
+    bytes.expect_block(list, "##DL", 56, 2);
+    EXPECT_EQ(bytes.at<std::uint64_t>(list + 48), records * 11);
+    const std::uint64_t data = bytes.at<std::uint64_t>(list + 32);
+    const std::uint64_t length = bytes.at<std::uint64_t>(data + 8);
+    bytes.expect_block(data, "##DT", length, 0);
+    EXPECT_LE(length - 24, 1000u + 11u);
+    EXPECT_EQ(bytes.at<double>(data + 24), static_cast<double>(records));  // the first record's time
+    records += (length - 24) / 11;
+    ASSERT_LT(++lists, 1000u);
+  }
+  EXPECT_EQ(records, 10'000u);
+  EXPECT_EQ(lists, 10'000u / 91 + 1);  // 91 records of 11 bytes fill a fragment of 1000
+}
+
 }  // namespace
 }  // namespace duet::mdf4
