@@ -77,7 +77,8 @@ Result<std::string> summarise(const Reader& reader) {
   out << "start: " << utc_text(info.start_time_ns) << '\n';
   for (std::size_t index = 0; index < info.groups.size(); ++index) {
     const GroupInfo& group = info.groups[index];
-    out << "group " << index << " \"" << group.name << "\": " << group.samples << " samples";
+    out << "group " << index << " \"" << group.name << "\": " << group.samples
+        << (group.samples == 1 ? " sample" : " samples");
     auto span = reader.time_span(index);
     if (!span) return Failure{span.error()};
     if (span.value()) {

@@ -1,11 +1,15 @@
 // libFuzzer target: arbitrary bytes as an MDF 4 file. The reader opens them and, if that succeeds, decodes every
-// record of every group with its physical value and time: it must give an error or values, never crash or hang.
+// record of every group with its physical value and time, then summarises and exports them as `duet mdf` does (the
+// export merges the groups by time, whatever the times are): an error or values, never a crash or a hang.
 
 #include <cstddef>
 #include <cstdint>
+#include <sstream>
 #include <vector>
 
+#include "duet/mdf4/csv_export.hpp"
 #include "duet/mdf4/reader.hpp"
+#include "duet/mdf4/summary.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   auto reader = duet::mdf4::Reader::from_bytes(std::vector<std::uint8_t>(data, data + size), "fuzz.mf4");
@@ -21,5 +25,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       }
     });
   }
+  (void)duet::mdf4::summarise(reader.value());
+  std::ostringstream csv;
+  (void)duet::mdf4::export_csv(reader.value(), {}, csv);
   return 0;
 }
