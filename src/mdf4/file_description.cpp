@@ -201,7 +201,6 @@ FileDescription describe_file(const FileSpec& spec, std::string_view program_ver
   ImageBuilder builder{description.image};
   const std::uint64_t header = builder.block("##HD", format::hd::links, format::hd::size - 72);
   builder.data<std::uint64_t>(header, format::hd::links, 0, static_cast<std::uint64_t>(spec.start_time_ns));
-  builder.link(header, format::hd::fh_first, write_history(builder, program_version, now_ns));
   builder.link(header, format::hd::comment, builder.text(spec.comment));
   std::uint64_t previous = 0;
   for (const GroupSpec& group_spec : spec.groups) {
@@ -214,6 +213,10 @@ FileDescription describe_file(const FileSpec& spec, std::string_view program_ver
     previous = group.dg_offset;
     description.groups.push_back(group);
   }
+  // The history last: its XML is a block of its own, so the description never ends with a channel, which a reader
+  // recovering an unfinalised file may read past (a text or a group's channel may have been shared, and written
+  // before).
+  builder.link(header, format::hd::fh_first, write_history(builder, program_version, now_ns));
   description.image.align(format::alignment);
   return description;
 }

@@ -217,6 +217,21 @@ TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   EXPECT_LT(records, data);                            // the list follows the block it lists
 }
 
+// A file killed before any data ends with its description: never with a channel block, which a recovering reader
+// may read past its end. Here every text of the last group's channel is shared with the first group's.
+TEST(Mdf4Layout, TheDescriptionEndsWithAnotherBlockThanAChannel) {
+  const TemporaryFile file{"description.mf4"};
+  const GroupSpec group{.name = "g", .comment = "", .channels = {{.name = "n", .type = ValueType::u8}}};
+  auto writer = Writer::create(file.path(), FileSpec{.groups = {group, group}});
+  ASSERT_TRUE(writer);
+  const WrittenFile bytes{file.bytes()};
+  std::uint64_t last = 64;
+  for (std::uint64_t block = 64; block < bytes.size(); block = (block + bytes.at<std::uint64_t>(block + 8) + 7) / 8 * 8)
+    last = block;
+  EXPECT_NE(bytes.text(last, 4), "##CN");
+  EXPECT_EQ(bytes.text(last, 4), "##MD");  // the history's XML
+}
+
 // What bounds the writer's memory: no data block larger than a fragment and a record, each listed by its own DL,
 // chained in order, the offsets counting the group's bytes before it.
 TEST(Mdf4Layout, DataInBoundedFragmentsEachListedInTheChain) {
