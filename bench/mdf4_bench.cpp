@@ -26,7 +26,7 @@ void write_sixteen_signals(benchmark::State& state) {
   const std::filesystem::path file =
       std::filesystem::temp_directory_path() / ("duet_mdf4_bench_" + std::to_string(::getpid()) + ".mf4");
   std::vector<duet::mdf4::Value> values(signals);
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): Google Benchmark's loop
     auto writer = duet::mdf4::Writer::create(file, sixteen_signals());
     for (std::int64_t sample = 0; sample < samples_per_file; ++sample) {
       for (std::size_t signal = 0; signal < signals; ++signal)

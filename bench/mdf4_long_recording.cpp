@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,9 +34,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   const std::uint64_t samples = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 3'600'000;
   const std::filesystem::path file =
       argc > 2 ? std::filesystem::path{argv[2]}
@@ -57,7 +56,7 @@ int main(int argc, char** argv) {
         return 1;
       }
       if ((sample + 1) % (samples / 10 == 0 ? 1 : samples / 10) == 0)
-        std::printf("written %llu samples, peak RSS %ld kB\n", static_cast<unsigned long long>(sample + 1),
+        std::printf("written %llu samples, peak RSS %ld kB\n", static_cast<unsigned long long>(sample) + 1,
                     peak_rss_kb());
     }
     if (duet::Status finalised = writer.value().finalise(); !finalised) {
@@ -76,7 +75,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "%s\n", reader.error().c_str());
     return 1;
   }
-  std::uint64_t read = 0, wrong = 0;
+  std::uint64_t read = 0;
+  std::uint64_t wrong = 0;
   const duet::Status walked = reader.value().for_each_record(0, [&](const duet::mdf4::Record& record) {
     for (std::size_t signal = 0; signal < signals; ++signal) {
       if (std::get<double>(record.value(signal + 1)) != value_of(record.index(), signal)) ++wrong;
@@ -88,4 +88,15 @@ int main(int argc, char** argv) {
               static_cast<unsigned long long>(read), seconds_since(read_start), static_cast<unsigned long long>(wrong),
               peak_rss_kb());
   return walked && read == samples && wrong == 0 ? 0 : 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& failure) {  // the file system's errors
+    std::fprintf(stderr, "%s\n", failure.what());
+    return 1;
+  }
 }

@@ -73,7 +73,7 @@ Result<Block> BlockReader::header(std::uint64_t offset, std::initializer_list<st
                    printable(bytes, 4) + "\""};
   block.id = std::string{static_cast<char>(bytes[2]), static_cast<char>(bytes[3])};
   block.length = load<std::uint64_t>(bytes + format::length_field);
-  const std::uint64_t link_count = load<std::uint64_t>(bytes + format::link_count_field);
+  const auto link_count = load<std::uint64_t>(bytes + format::link_count_field);
   const std::string what = "##" + block.id + " block";
   if (block.length < format::header_size || link_count > (block.length - format::header_size) / 8)
     return Failure{here(offset) + ": " + what + " of length " + std::to_string(block.length) + " cannot hold its " +

@@ -22,10 +22,10 @@ struct Block {
   std::vector<std::uint64_t> links;
   std::vector<std::uint8_t> data;  // the data section (empty for a DT, whose records are read as a stream)
 
-  std::uint64_t link(std::size_t index) const { return index < links.size() ? links[index] : 0; }
+  [[nodiscard]] std::uint64_t link(std::size_t index) const { return index < links.size() ? links[index] : 0; }
   // A field of the data section; 0 beyond its end (callers check data.size() where a field is required).
   template <typename T>
-  T field(std::uint64_t at) const {
+  [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] T field(std::uint64_t at) const {
     return at + sizeof(T) <= data.size() ? load<T>(data.data() + at) : T{};
   }
 };
@@ -45,10 +45,10 @@ class BlockReader {
   // The text of a TX block, or the <TX> of an MD block's XML (its XML if it has none); "" for NIL.
   Result<std::string> text(std::uint64_t offset, std::string_view via);
   // The first block after `offset` that was read, or the file's end.
-  std::uint64_t next_block_after(std::uint64_t offset) const;
+  [[nodiscard]] std::uint64_t next_block_after(std::uint64_t offset) const;
 
-  std::string here(std::uint64_t offset) const;  // "FILE: at 0x1A0" for messages
-  const ByteSource& source() const { return source_; }
+  [[nodiscard]] std::string here(std::uint64_t offset) const;  // "FILE: at 0x1A0" for messages
+  [[nodiscard]] const ByteSource& source() const { return source_; }
 
  private:
   Result<Block> header(std::uint64_t offset, std::initializer_list<std::string_view> ids, std::string_view via);

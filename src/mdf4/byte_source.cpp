@@ -18,8 +18,8 @@ class FileSource final : public ByteSource {
   FileSource(const FileSource&) = delete;
   FileSource& operator=(const FileSource&) = delete;
 
-  std::uint64_t size() const override { return size_; }
-  const std::string& name() const override { return name_; }
+  [[nodiscard]] std::uint64_t size() const override { return size_; }
+  [[nodiscard]] const std::string& name() const override { return name_; }
   bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const override {
     while (count > 0) {
       const ssize_t got = ::pread(file_, into, count, static_cast<off_t>(offset));
@@ -41,8 +41,8 @@ class FileSource final : public ByteSource {
 class MemorySource final : public ByteSource {
  public:
   MemorySource(std::vector<std::uint8_t> bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {}
-  std::uint64_t size() const override { return bytes_.size(); }
-  const std::string& name() const override { return name_; }
+  [[nodiscard]] std::uint64_t size() const override { return bytes_.size(); }
+  [[nodiscard]] const std::string& name() const override { return name_; }
   bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const override {
     if (count > 0) std::memcpy(into, bytes_.data() + offset, count);
     return true;

@@ -14,10 +14,10 @@ namespace duet::mdf4 {
 class ByteSource {
  public:
   virtual ~ByteSource() = default;
-  virtual std::uint64_t size() const = 0;
+  [[nodiscard]] virtual std::uint64_t size() const = 0;
   // Precondition: offset + count <= size(). Returns false only if the read itself fails.
   virtual bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const = 0;
-  virtual const std::string& name() const = 0;
+  [[nodiscard]] virtual const std::string& name() const = 0;
 };
 
 Result<std::unique_ptr<ByteSource>> open_file_source(const std::filesystem::path& path);

@@ -28,7 +28,7 @@ void store(std::uint8_t* bytes, T value) {
 // Bytes appended at the end, or put at a place already written.
 class ByteBuffer {
  public:
-  std::uint64_t size() const { return bytes_.size(); }
+  [[nodiscard]] std::uint64_t size() const { return bytes_.size(); }
   std::vector<std::uint8_t>& bytes() { return bytes_; }
   void append_text(std::string_view text) {
     if (!text.empty()) std::memcpy(grow(text.size()), text.data(), text.size());

@@ -106,7 +106,11 @@ Result<std::vector<Column>> choose_columns(const FileInfo& info, const std::vect
     if (found.size() > 1) {
       std::string groups;
       for (const Column& column : found) groups += (groups.empty() ? "" : ", ") + std::to_string(column.group);
-      return Failure{"channel '" + name + "' is in groups " + groups + "; name it as GROUP:" + channel_name};
+      std::string message = "channel '" + name + "' is in groups ";
+      message += groups;
+      message += "; name it as GROUP:";
+      message += channel_name;
+      return Failure{message};
     }
     const ChannelInfo& channel = info.groups[found[0].group].channels[found[0].channel];
     if (!channel.decoded)

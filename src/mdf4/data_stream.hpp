@@ -20,7 +20,7 @@ class DataStream {
   DataStream(const ByteSource& source, const std::vector<DataPiece>& pieces) : source_(source), pieces_(pieces) {}
   // The next `count` bytes, valid until the next call; empty if the stream holds fewer (or a read failed: failed()).
   std::span<const std::uint8_t> next(std::uint64_t count);
-  bool failed() const { return failed_; }
+  [[nodiscard]] bool failed() const { return failed_; }
 
  private:
   bool refill(std::uint64_t wanted);

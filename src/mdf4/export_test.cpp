@@ -36,7 +36,7 @@ class Mdf4Export : public ::testing::Test {
       }
     }
   }
-  Reader reader() const { return std::move(Reader::open(file.path()).value()); }
+  [[nodiscard]] Reader reader() const { return std::move(Reader::open(file.path()).value()); }
   const TemporaryFile file{"export.mf4"};
 };
 

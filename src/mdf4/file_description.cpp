@@ -1,5 +1,6 @@
 #include "file_description.hpp"
 
+#include <cstddef>
 #include <map>
 #include <string>
 
@@ -52,9 +53,9 @@ class ImageBuilder {
     const std::uint64_t at = image_.size();
     image_.append_text(id);
     image_.append<std::uint32_t>(0);
-    image_.append<std::uint64_t>(format::header_size + 8 * links + data_size);
+    image_.append<std::uint64_t>(format::header_size + 8 * std::uint64_t{links} + data_size);
     image_.append<std::uint64_t>(links);
-    image_.append_zeros(8 * links + data_size);
+    image_.append_zeros(8 * std::uint64_t{links} + data_size);
     return at;
   }
   void link(std::uint64_t block, unsigned index, std::uint64_t target) {
@@ -62,7 +63,7 @@ class ImageBuilder {
   }
   template <typename T>
   void data(std::uint64_t block, unsigned links, std::uint64_t field, T value) {
-    image_.put<T>(block + format::header_size + 8 * links + field, value);
+    image_.put<T>(block + format::header_size + 8 * std::uint64_t{links} + field, value);
   }
   // A text block (`##TX` or `##MD`), zero-terminated and padded with zeros to 8 bytes, which its length includes;
   // equal plain texts share one block. An empty plain text is no block (NIL).

@@ -18,7 +18,7 @@ struct RecordLayout {
   std::vector<std::uint32_t> byte_offsets;  // of each value channel within the record
   std::uint32_t data_bytes = 0;             // time and values
   std::uint32_t invalidation_bytes = 0;
-  std::uint32_t record_bytes() const { return data_bytes + invalidation_bytes; }
+  [[nodiscard]] std::uint32_t record_bytes() const { return data_bytes + invalidation_bytes; }
 };
 
 struct DescribedGroup {

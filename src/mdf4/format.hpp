@@ -2,6 +2,7 @@
 // The MDF 4 block layouts duet writes and reads, as offsets from a block's start (docs/MDF4.md, "Layout"). All
 // integers are little-endian; a link is an absolute file offset, 0 meaning none (NIL).
 
+#include <cstddef>
 #include <cstdint>
 
 namespace duet::mdf4::format {
@@ -27,7 +28,7 @@ inline constexpr std::uint64_t link_count_field = 16;
 inline constexpr std::uint64_t alignment = 8;
 inline constexpr std::uint64_t hd_offset = 64;
 
-inline constexpr std::uint64_t link(unsigned index) { return header_size + 8 * index; }
+inline constexpr std::uint64_t link(unsigned index) { return header_size + 8 * std::uint64_t{index}; }
 
 namespace hd {  // header, 6 links
 inline constexpr unsigned dg_first = 0, fh_first = 1, comment = 5, links = 6;

@@ -2,6 +2,7 @@
 // MDF 4 files built byte by byte in tests, as other writers lay them out: blocks appended 8-byte aligned, their
 // fields put at offsets written out from the format's tables (docs/MDF4.md), independently of duet's writer.
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -45,7 +46,7 @@ class HandMadeFile {
     std::memcpy(bytes.data() + at, &value, sizeof value);
   }
   void link(std::uint64_t block, unsigned index, std::uint64_t target) {
-    put<std::uint64_t>(block + 24 + 8 * index, target);
+    put<std::uint64_t>(block + 24 + 8 * std::uint64_t{index}, target);
   }
   template <typename T>
   T get(std::uint64_t at) const {
@@ -71,7 +72,7 @@ class HandMadeFile {
   std::uint64_t channel_group(std::uint64_t record_id, std::uint64_t cycles, std::uint32_t data_bytes,
                               std::uint32_t invalidation_bytes, unsigned links = 6) {
     const std::uint64_t at = block("##CG", links, 32);
-    const std::uint64_t data = at + 24 + 8 * links;
+    const std::uint64_t data = at + 24 + 8 * std::uint64_t{links};
     put<std::uint64_t>(data, record_id);
     put<std::uint64_t>(data + 8, cycles);
     put<std::uint32_t>(data + 24, data_bytes);

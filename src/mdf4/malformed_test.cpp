@@ -13,7 +13,6 @@ namespace duet::mdf4 {
 namespace {
 
 using testing::HandMadeFile;
-using testing::RecordBytes;
 using testing::TemporaryFile;
 
 // A valid file of duet's writer with two fragments of data, whose bytes each case damages.

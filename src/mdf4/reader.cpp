@@ -52,7 +52,7 @@ struct Reader::State {
   std::vector<DataGroup> data_groups;
   std::vector<std::size_t> data_group_of;  // per group
 
-  std::string name() const { return source->name(); }
+  [[nodiscard]] std::string name() const { return source->name(); }
 
   Result<Conversion> read_conversion(BlockReader& blocks, std::uint64_t offset, const std::string& via) {
     Conversion conversion;
@@ -64,8 +64,8 @@ struct Reader::State {
     if (block.data.size() < format::cc::values)
       return Failure{blocks.here(offset) + ": ##CC block too short for its fields"};
     conversion.cc_type = block.field<std::uint8_t>(data + format::cc::type);
-    const std::uint16_t ref_count = block.field<std::uint16_t>(format::cc::ref_count);
-    const std::uint16_t value_count = block.field<std::uint16_t>(format::cc::value_count);
+    const auto ref_count = block.field<std::uint16_t>(format::cc::ref_count);
+    const auto value_count = block.field<std::uint16_t>(format::cc::value_count);
     if (block.links.size() < format::cc::links + std::size_t{ref_count})
       return Failure{blocks.here(offset) + ": ##CC block has " + std::to_string(block.links.size()) +
                      " links, fewer than its 4 and " + std::to_string(ref_count) + " references"};
@@ -133,12 +133,12 @@ struct Reader::State {
     if (!conversion) return Failure{conversion.error()};
     channel.conversion = conversion.value();
 
-    const std::uint8_t type = block.field<std::uint8_t>(format::cn::type);
+    const auto type = block.field<std::uint8_t>(format::cn::type);
     channel.data_type = block.field<std::uint8_t>(format::cn::data_type);
     channel.bit_offset = block.field<std::uint8_t>(format::cn::bit_offset);
     channel.byte_offset = block.field<std::uint32_t>(format::cn::byte_offset);
     channel.bit_count = block.field<std::uint32_t>(format::cn::bit_count);
-    const std::uint32_t flags = block.field<std::uint32_t>(format::cn::flags);
+    const auto flags = block.field<std::uint32_t>(format::cn::flags);
     if (type == format::cn::master) channel.role = ChannelInfo::Role::master;
     if (type == format::cn::virtual_master || type == format::cn::virtual_data) {
       // Its stored value is the record's index, unsigned, which its conversion may scale.
@@ -175,7 +175,7 @@ struct Reader::State {
     group.block_offset = block.offset;
     group.record_id = block.field<std::uint64_t>(data + format::cg::record_id);
     group.samples = block.field<std::uint64_t>(data + format::cg::cycle_count);
-    const std::uint16_t flags = block.field<std::uint16_t>(data + format::cg::flags);
+    const auto flags = block.field<std::uint16_t>(data + format::cg::flags);
     group.data_bytes = block.field<std::uint32_t>(data + format::cg::data_bytes);
     group.invalidation_bytes = block.field<std::uint32_t>(data + format::cg::invalidation_bytes);
     if ((flags & 1u) != 0) return Failure{where + ": variable-length (VLSD) channel groups are not supported"};
@@ -208,7 +208,7 @@ struct Reader::State {
   }
 
   // The DT blocks of a data group: a DT, or a DL chain (possibly under an HL).
-  Status read_data_blocks(BlockReader& blocks, DataGroup& group, std::uint64_t link) {
+  Status read_data_blocks(BlockReader& blocks, DataGroup& group, std::uint64_t link) const {
     if (link == 0) return done();
     auto first = blocks.read_data_header(link, "the data of the ##DG at " + hex(group.offset));
     if (first && first.value().id == "DT") {
@@ -232,7 +232,7 @@ struct Reader::State {
       const Block& dl = list.value();
       if (dl.links.empty() || dl.data.size() < format::dl::count + 4)
         return Failure{blocks.here(next) + ": ##DL block too short for its fields"};
-      const std::uint32_t count = dl.field<std::uint32_t>(format::dl::count);
+      const auto count = dl.field<std::uint32_t>(format::dl::count);
       if (count != dl.links.size() - 1)
         return Failure{blocks.here(next) + ": ##DL block lists " + std::to_string(count) + " data blocks in " +
                        std::to_string(dl.links.size() - 1) + " links"};
@@ -266,7 +266,7 @@ struct Reader::State {
                      " bytes, fewer than the 64 of an MDF identification block)"};
     const std::string file_id = trimmed(id, 8);
     if (file_id != "MDF" && file_id != "UnFinMF")
-      return Failure{name() + ": not an MDF file (it starts with \"" + trimmed(id, 8) + "\", not \"MDF\")"};
+      return Failure{name() + ": not an MDF file (it starts with \"" + trimmed(id, 8) + R"(", not "MDF"))"};
     info.version = trimmed(id + format::id::version_text, 8);
     info.program = trimmed(id + format::id::program, 8);
     info.version_number = load<std::uint16_t>(id + format::id::version_number);
@@ -291,7 +291,9 @@ struct Reader::State {
         const std::string xml{bytes.begin(), std::find(bytes.begin(), bytes.end(), std::uint8_t{0})};
         const std::string tool = element_text(xml, "tool_id");
         const std::string version = element_text(xml, "tool_version");
-        info.history.push_back(tool.empty() ? text_of_xml(xml) : version.empty() ? tool : tool + " " + version);
+        std::string named = tool.empty() ? text_of_xml(xml) : tool;
+        if (!tool.empty() && !version.empty()) named += " " + version;
+        info.history.push_back(named);
       }
       via = "the next ##FH of the ##FH at " + hex(next);
       next = history.value().link(format::fh::next);
@@ -301,7 +303,7 @@ struct Reader::State {
     for (std::uint64_t next = header.value().link(format::hd::dg_first); next != 0;) {
       auto block = blocks.read(next, {"DG"}, via);
       if (!block) return Failure{block.error()};
-      if (block.value().links.size() < format::dg::links || block.value().data.size() < 1)
+      if (block.value().links.size() < format::dg::links || block.value().data.empty())
         return Failure{blocks.here(next) + ": ##DG block too short for its fields"};
       DataGroup data_group;
       data_group.offset = next;
@@ -520,7 +522,8 @@ Result<std::optional<std::pair<double, double>>> Reader::time_span(std::size_t g
   const std::uint64_t record_bytes = std::uint64_t{info_group.data_bytes} + info_group.invalidation_bytes;
   std::vector<std::uint8_t> bytes(record_bytes);
   const auto time_of = [&](std::uint64_t index) -> std::optional<double> {
-    std::uint64_t skip = index * record_bytes, filled = 0;
+    std::uint64_t skip = index * record_bytes;
+    std::uint64_t filled = 0;
     for (const DataPiece& piece : data_group.pieces) {
       if (skip >= piece.size) {
         skip -= piece.size;
@@ -534,7 +537,8 @@ Result<std::optional<std::pair<double, double>>> Reader::time_span(std::size_t g
     }
     return std::nullopt;
   };
-  const std::optional<double> first = time_of(0), last = time_of(info_group.samples - 1);
+  const std::optional<double> first = time_of(0);
+  const std::optional<double> last = time_of(info_group.samples - 1);
   if (!first || !last)
     return Failure{state_->name() + ": cannot read the data of the ##DG at " + hex(data_group.offset)};
   return Span{std::pair{*first, *last}};

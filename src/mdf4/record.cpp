@@ -39,12 +39,12 @@ Number Record::value(std::size_t index) const {
   std::uint64_t raw = big ? big_endian(at, bytes) : little_endian(at, bytes);
   if (channel.data_type == float_le || channel.data_type == float_be) {
     if (channel.bit_count == 32) {
-      float value;
+      float value = 0;
       const auto bits = static_cast<std::uint32_t>(raw);
       std::memcpy(&value, &bits, sizeof value);
       return value;
     }
-    double value;
+    double value = 0;
     std::memcpy(&value, &raw, sizeof value);
     return value;
   }

@@ -1,9 +1,10 @@
 // A recording killed mid-way: the child process writes and dies by SIGKILL; the reader recovers every sample that
 // reached the file in a whole fragment.
 #include <gtest/gtest.h>
-#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 
 #include "duet/mdf4/reader.hpp"
 #include "duet/mdf4/writer.hpp"

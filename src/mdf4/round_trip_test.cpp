@@ -25,8 +25,8 @@ auto bits(T value) {
 }
 
 std::vector<std::vector<Value>> every_type_samples() {
-  const float float_nan = std::bit_cast<float>(0x7FA00001u);  // a signalling NaN with a payload
-  const double double_nan = std::bit_cast<double>(0x7FF4000000000123ull);
+  const auto float_nan = std::bit_cast<float>(0x7FA00001u);  // a signalling NaN with a payload
+  const auto double_nan = std::bit_cast<double>(0x7FF4000000000123ull);
   return {
       {true, std::uint8_t{0}, std::uint16_t{0}, std::uint32_t{0}, std::uint64_t{0}, std::int8_t{0}, std::int16_t{0},
        std::int32_t{0}, std::int64_t{0}, 0.0f, 0.0},
@@ -163,6 +163,7 @@ TEST(Mdf4RoundTrip, MissingSamplesAreInvalidAndTheOthersValid) {
     ASSERT_TRUE(writer);
     for (int sample = 0; sample < 10; ++sample) {
       std::vector<Value> values;
+      values.reserve(10);
       for (int channel = 0; channel < 10; ++channel)
         values.push_back(channel == sample ? Value{} : Value{static_cast<std::uint8_t>(channel)});
       ASSERT_TRUE(writer.value().append(0, sample, values));

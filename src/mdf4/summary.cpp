@@ -11,7 +11,7 @@ namespace {
 
 std::string number_text(double value) {
   char text[32];
-  const auto end = std::to_chars(text, text + sizeof text, value).ptr;
+  auto* const end = std::to_chars(text, text + sizeof text, value).ptr;
   return {text, end};
 }
 

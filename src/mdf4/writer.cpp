@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,7 +39,7 @@ struct GroupState {
   std::uint64_t records_pending = 0;
   std::uint64_t data_bytes_written = 0;
   std::uint64_t last_list = 0;  // the last DL of the group's chain; 0: none yet (the DG's data link is NIL)
-  double last_time = -INFINITY;
+  double last_time = -std::numeric_limits<double>::infinity();
 };
 
 void start_pending(ByteBuffer& pending) {
@@ -102,10 +103,10 @@ struct Writer::State {
   }
 
   template <typename T>
-  Status patch(std::uint64_t offset, T value) {
+  Status patch(std::uint64_t at, T value) {
     std::uint8_t bytes[sizeof value];
     store(bytes, value);
-    return write_at(offset, bytes, sizeof value);
+    return write_at(at, bytes, sizeof value);
   }
 
   // The pending records as a DT block, followed by a DL that lists it, linked last into the group's chain: the link
@@ -118,7 +119,7 @@ struct Writer::State {
     std::copy_n("##DT", 4, block.bytes().begin());
     block.put<std::uint64_t>(format::length_field, format::header_size + data_size);
     block.align(format::alignment);
-    const std::uint64_t dl_offset = end + block.size();
+    const std::uint64_t list_offset = end + block.size();
     block.append_text("##DL");
     block.append<std::uint32_t>(0);
     block.append<std::uint64_t>(dl_size);
@@ -131,10 +132,10 @@ struct Writer::State {
     block.append<std::uint64_t>(group.data_bytes_written);
     if (Status written = write_at(end, block.bytes().data(), block.size()); !written) return written;
     end += block.size();
-    const std::uint64_t link = group.last_list == 0 ? group.described.dg_offset + format::link(format::dg::data)
-                                                    : group.last_list + format::link(format::dl::next);
-    if (Status linked = patch<std::uint64_t>(link, dl_offset); !linked) return linked;
-    group.last_list = dl_offset;
+    const std::uint64_t link_field = group.last_list == 0 ? group.described.dg_offset + format::link(format::dg::data)
+                                                          : group.last_list + format::link(format::dl::next);
+    if (Status linked = patch<std::uint64_t>(link_field, list_offset); !linked) return linked;
+    group.last_list = list_offset;
     group.data_bytes_written += data_size;
     group.records_written += group.records_pending;
     group.records_pending = 0;
@@ -142,7 +143,7 @@ struct Writer::State {
     return done();
   }
 
-  Status usable() const {
+  [[nodiscard]] Status usable() const {
     if (!failure.empty()) return Failure{failure};
     if (finalised) return Failure{path.string() + ": the MDF file is finalised; nothing more can be written"};
     return done();

@@ -18,13 +18,13 @@ class WrittenFile {
  public:
   explicit WrittenFile(std::vector<std::uint8_t> bytes) : bytes_(std::move(bytes)) {}
   template <typename T>
-  T at(std::uint64_t offset) const {
+  [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] T at(std::uint64_t offset) const {
     EXPECT_LE(offset + sizeof(T), bytes_.size());
     T value{};
     if (offset + sizeof(T) <= bytes_.size()) std::memcpy(&value, bytes_.data() + offset, sizeof value);
     return value;
   }
-  std::string text(std::uint64_t offset, std::size_t size) const {
+  [[nodiscard]] std::string text(std::uint64_t offset, std::size_t size) const {
     return offset + size <= bytes_.size() ? std::string{bytes_.begin() + static_cast<std::ptrdiff_t>(offset),
                                                         bytes_.begin() + static_cast<std::ptrdiff_t>(offset + size)}
                                           : std::string{};
@@ -39,8 +39,8 @@ class WrittenFile {
     EXPECT_EQ(at<std::uint64_t>(offset + 16), links);
   }
   // A TX or MD block's text: zero-terminated, the length a multiple of 8 with zeros after the text.
-  std::string block_text(std::uint64_t offset, const std::string& id = "##TX") const {
-    const std::uint64_t length = at<std::uint64_t>(offset + 8);
+  [[nodiscard]] std::string block_text(std::uint64_t offset, const std::string& id = "##TX") const {
+    const auto length = at<std::uint64_t>(offset + 8);
     expect_block(offset, id, length, 0);
     EXPECT_EQ(length % 8, 0u);
     const std::string content = text(offset + 24, length - 24);
@@ -49,7 +49,7 @@ class WrittenFile {
     EXPECT_EQ(content.find_first_not_of('\0', end), std::string::npos);
     return content.substr(0, end);
   }
-  std::size_t size() const { return bytes_.size(); }
+  [[nodiscard]] std::size_t size() const { return bytes_.size(); }
 
  private:
   std::vector<std::uint8_t> bytes_;
@@ -100,8 +100,8 @@ TEST(Mdf4Layout, AnUnfinalisedFileSaysSoAndCountsNothingYet) {
   const WrittenFile bytes = written(file, false);
   EXPECT_EQ(bytes.text(0, 8), "UnFinMF ");
   EXPECT_EQ(bytes.at<std::uint16_t>(60), 0x01);  // the cycle counts are not up to date
-  const std::uint64_t group = bytes.at<std::uint64_t>(64 + 24);
-  const std::uint64_t channel_group = bytes.at<std::uint64_t>(group + 32);
+  const auto group = bytes.at<std::uint64_t>(64 + 24);
+  const auto channel_group = bytes.at<std::uint64_t>(group + 32);
   EXPECT_EQ(bytes.at<std::uint64_t>(channel_group + 80), 0u);
   EXPECT_NE(bytes.at<std::uint64_t>(group + 40), 0u);  // but the flushed data is linked
 }
@@ -111,7 +111,7 @@ TEST(Mdf4Layout, HeaderAndFileHistory) {
   const WrittenFile bytes = written(file, true);
   bytes.expect_block(64, "##HD", 104, 6);
   EXPECT_NE(bytes.at<std::uint64_t>(64 + 24), 0u);  // first DG
-  const std::uint64_t history = bytes.at<std::uint64_t>(64 + 32);
+  const auto history = bytes.at<std::uint64_t>(64 + 32);
   EXPECT_EQ(bytes.at<std::uint64_t>(64 + 40), 0u);  // channel hierarchy
   EXPECT_EQ(bytes.at<std::uint64_t>(64 + 48), 0u);  // attachments
   EXPECT_EQ(bytes.at<std::uint64_t>(64 + 56), 0u);  // events
@@ -138,17 +138,17 @@ TEST(Mdf4Layout, HeaderAndFileHistory) {
 TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   const TemporaryFile file{"groups.mf4"};
   const WrittenFile bytes = written(file, true);
-  const std::uint64_t group = bytes.at<std::uint64_t>(64 + 24);
+  const auto group = bytes.at<std::uint64_t>(64 + 24);
   bytes.expect_block(group, "##DG", 64, 4);
   EXPECT_EQ(bytes.at<std::uint64_t>(group + 24), 0u);  // the only DG
-  const std::uint64_t channel_group = bytes.at<std::uint64_t>(group + 32);
-  const std::uint64_t data = bytes.at<std::uint64_t>(group + 40);
+  const auto channel_group = bytes.at<std::uint64_t>(group + 32);
+  const auto data = bytes.at<std::uint64_t>(group + 40);
   EXPECT_EQ(bytes.at<std::uint64_t>(group + 48), 0u);
   EXPECT_EQ(bytes.at<std::uint8_t>(group + 56), 0);  // sorted: no record ids
 
   bytes.expect_block(channel_group, "##CG", 104, 6);
   EXPECT_EQ(bytes.at<std::uint64_t>(channel_group + 24), 0u);
-  const std::uint64_t time = bytes.at<std::uint64_t>(channel_group + 32);
+  const auto time = bytes.at<std::uint64_t>(channel_group + 32);
   EXPECT_EQ(bytes.block_text(bytes.at<std::uint64_t>(channel_group + 40)), "rate 1");
   EXPECT_EQ(bytes.at<std::uint64_t>(channel_group + 48), 0u);
   EXPECT_EQ(bytes.at<std::uint64_t>(channel_group + 56), 0u);
@@ -160,7 +160,7 @@ TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   EXPECT_EQ(bytes.at<std::uint32_t>(channel_group + 100), 1u);  // one invalidation byte
 
   bytes.expect_block(time, "##CN", 160, 8);
-  const std::uint64_t speed = bytes.at<std::uint64_t>(time + 24);
+  const auto speed = bytes.at<std::uint64_t>(time + 24);
   EXPECT_EQ(bytes.at<std::uint64_t>(time + 32), 0u);
   EXPECT_EQ(bytes.block_text(bytes.at<std::uint64_t>(time + 40)), "time");
   EXPECT_EQ(bytes.at<std::uint64_t>(time + 48), 0u);
@@ -179,7 +179,7 @@ TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   bytes.expect_block(speed, "##CN", 160, 8);
   EXPECT_EQ(bytes.at<std::uint64_t>(speed + 24), 0u);
   EXPECT_EQ(bytes.block_text(bytes.at<std::uint64_t>(speed + 40)), "speed");
-  const std::uint64_t conversion = bytes.at<std::uint64_t>(speed + 56);
+  const auto conversion = bytes.at<std::uint64_t>(speed + 56);
   EXPECT_EQ(bytes.block_text(bytes.at<std::uint64_t>(speed + 72)), "rad/s");
   EXPECT_EQ(bytes.block_text(bytes.at<std::uint64_t>(speed + 80)), "wheel speed");
   EXPECT_EQ(bytes.at<std::uint8_t>(speed + 88), 0);
@@ -192,7 +192,8 @@ TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   EXPECT_EQ(bytes.at<std::uint16_t>(speed + 110), 0);   // no attachments
 
   bytes.expect_block(conversion, "##CC", 96, 4);
-  for (unsigned link = 0; link < 4; ++link) EXPECT_EQ(bytes.at<std::uint64_t>(conversion + 24 + 8 * link), 0u);
+  for (unsigned link = 0; link < 4; ++link)
+    EXPECT_EQ(bytes.at<std::uint64_t>(conversion + 24 + 8 * std::uint64_t{link}), 0u);
   EXPECT_EQ(bytes.at<std::uint8_t>(conversion + 56), 1);  // linear
   EXPECT_EQ(bytes.at<std::uint16_t>(conversion + 60), 0);
   EXPECT_EQ(bytes.at<std::uint16_t>(conversion + 62), 2);
@@ -202,7 +203,7 @@ TEST(Mdf4Layout, DataGroupChannelGroupChannelsConversionAndData) {
   // The data: a list of one data block, with the records (time, speed, invalidation byte).
   bytes.expect_block(data, "##DL", 56, 2);
   EXPECT_EQ(bytes.at<std::uint64_t>(data + 24), 0u);
-  const std::uint64_t records = bytes.at<std::uint64_t>(data + 32);
+  const auto records = bytes.at<std::uint64_t>(data + 32);
   EXPECT_EQ(bytes.at<std::uint8_t>(data + 40), 0);  // offsets follow
   EXPECT_EQ(bytes.at<std::uint32_t>(data + 44), 1u);
   EXPECT_EQ(bytes.at<std::uint64_t>(data + 48), 0u);
@@ -243,13 +244,14 @@ TEST(Mdf4Layout, DataInBoundedFragmentsEachListedInTheChain) {
       ASSERT_TRUE(writer.value().append(0, sample, std::vector<Value>{static_cast<std::int16_t>(sample)}));
   }
   const WrittenFile bytes{file.bytes()};
-  const std::uint64_t group = bytes.at<std::uint64_t>(64 + 24);
-  std::uint64_t records = 0, lists = 0;
-  for (std::uint64_t list = bytes.at<std::uint64_t>(group + 40); list != 0; list = bytes.at<std::uint64_t>(list + 24)) {
+  const auto group = bytes.at<std::uint64_t>(64 + 24);
+  std::uint64_t records = 0;
+  std::uint64_t lists = 0;
+  for (auto list = bytes.at<std::uint64_t>(group + 40); list != 0; list = bytes.at<std::uint64_t>(list + 24)) {
     bytes.expect_block(list, "##DL", 56, 2);
     EXPECT_EQ(bytes.at<std::uint64_t>(list + 48), records * 11);
-    const std::uint64_t data = bytes.at<std::uint64_t>(list + 32);
-    const std::uint64_t length = bytes.at<std::uint64_t>(data + 8);
+    const auto data = bytes.at<std::uint64_t>(list + 32);
+    const auto length = bytes.at<std::uint64_t>(data + 8);
     bytes.expect_block(data, "##DT", length, 0);
     EXPECT_LE(length - 24, 1000u + 11u);
     EXPECT_EQ(bytes.at<double>(data + 24), static_cast<double>(records));  // the first record's time

@@ -73,12 +73,12 @@ class Record {
   Record(const GroupInfo& group, std::span<const std::uint8_t> bytes, std::uint64_t index)
       : group_(&group), bytes_(bytes), index_(index) {}
   // Precondition: channel < channels.size(). A channel that is not decoded reads 0.
-  Number value(std::size_t channel) const;
-  bool valid(std::size_t channel) const;
-  Physical physical(std::size_t channel) const;
+  [[nodiscard]] Number value(std::size_t index) const;
+  [[nodiscard]] bool valid(std::size_t index) const;
+  [[nodiscard]] Physical physical(std::size_t index) const;
   // The master's physical value (seconds for a time master); NaN if the group has none.
-  double time() const;
-  std::uint64_t index() const { return index_; }
+  [[nodiscard]] double time() const;
+  [[nodiscard]] std::uint64_t index() const { return index_; }
 
  private:
   const GroupInfo* group_;
@@ -94,7 +94,7 @@ class RecordCursor {
   ~RecordCursor();
   // The next record, valid until the next call; none at the end, or if reading failed (error() then says why).
   std::optional<Record> next();
-  const std::string& error() const;
+  [[nodiscard]] const std::string& error() const;
 
  private:
   friend class Reader;
@@ -113,13 +113,13 @@ class Reader {
   Reader& operator=(Reader&&) noexcept;
   ~Reader();
 
-  const FileInfo& info() const;
+  [[nodiscard]] const FileInfo& info() const;
   // Precondition: group < info().groups.size().
-  RecordCursor records(std::size_t group) const;
+  [[nodiscard]] RecordCursor records(std::size_t group) const;
   // Every record of `group` in order, through `visit`; fails naming the block if the data is damaged.
   Status for_each_record(std::size_t group, const std::function<void(const Record&)>& visit) const;
   // The first and last master values, if the group has a master and samples.
-  Result<std::optional<std::pair<double, double>>> time_span(std::size_t group) const;
+  [[nodiscard]] Result<std::optional<std::pair<double, double>>> time_span(std::size_t group) const;
 
  private:
   struct State;

@@ -22,7 +22,7 @@ using Value = std::variant<std::monostate, bool, std::uint8_t, std::uint16_t, st
 struct WriterOptions {
   // A group's records are appended to the file once this many bytes of them are buffered (and by flush()): the
   // memory a group takes, and what a crash may lose of it.
-  std::size_t fragment_bytes = 64 * 1024;
+  std::size_t fragment_bytes = std::size_t{64} * 1024;
 };
 
 class Writer {
