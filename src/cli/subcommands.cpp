@@ -5,6 +5,7 @@
 #include "a2l_command.hpp"
 #include "design_command.hpp"
 #include "gen_command.hpp"
+#include "mdf_command.hpp"
 #include "model_command.hpp"
 #include "monitor_command.hpp"
 #include "pil_command.hpp"
@@ -32,6 +33,7 @@ constexpr Subcommand table[] = {
      define_pil_command},
     {"studio", "See, edit, simulate and watch a model in the browser", define_studio_command},
     {"a2l", "Check A2L files against ASAP2 1.71 and XCP's IF_DATA", define_a2l_command},
+    {"mdf", "Describe an ASAM MDF 4 measurement file, export its channels as CSV", define_mdf_command},
 };
 
 }  // namespace
