@@ -52,21 +52,13 @@ void RobotPort::idle() {
   ExecutivePort::idle();
 }
 
-// The index of the model's task that interrupt `name` triggers (its place in the task table).
-consteval std::size_t task_of(std::string_view name) {
-  for (std::size_t index = 0; index < std::size(balbot::tasks); ++index) {
-    if (balbot::tasks[index].name == name) return index;
-  }
-  return task_capacity;  // the model has no such task: the static_asserts below say so
-}
+// The index of the model's task that interrupt `name` triggers (its place in the task table); a name the model has no
+// task of is a compile error (rt::task_index): every interrupt task of the robot's model has its handler here.
+consteval std::size_t task_of(std::string_view name) { return rt::task_index(balbot::description, name); }
 constexpr std::size_t pwm_task = task_of("TIM1"), left_hall_task = task_of("TIM2"), right_hall_task = task_of("TIM4"),
                       echo_task = task_of("TIM5"), imu_task = task_of("EXTI8"), spi_sent_task = task_of("DMA2_Stream3"),
                       spi_received_task = task_of("DMA2_Stream2"), adc_task = task_of("DMA2_Stream4"),
                       gains_task = task_of("IPCC_RX1");
-static_assert(pwm_task < task_capacity && left_hall_task < task_capacity && right_hall_task < task_capacity &&
-                  echo_task < task_capacity && imu_task < task_capacity && spi_sent_task < task_capacity &&
-                  spi_received_task < task_capacity && adc_task < task_capacity && gains_task < task_capacity,
-              "every interrupt task of the robot's model has its handler here");
 
 void report_last_fault() {
   const auto fault = chip::take_last_fault();
