@@ -43,8 +43,7 @@ constexpr unsigned console_uart = 3;
 
 // XCP: the model's slave as its generated code sizes it (one DAQ list, a queue for the whole play-out).
 transfer_test::xcp::Slave slave{{.timestamp = board::ExecutivePort::executive_microseconds,  // the A2L's unit
-                                 .write_atomically = cortex_m::copy_with_interrupts_masked,
-                                 .queue_lock = {cortex_m::mask_interrupts, cortex_m::restore_interrupts}}};
+                                 .write_atomically = cortex_m::copy_with_interrupts_masked}};
 std::array<std::uint8_t, xcp::ethernet_framing.frame_size(transfer_test::xcp::max_cto)> xcp_decoder_buffer{};
 std::array<std::uint8_t, transfer_test::xcp::max_dto> xcp_packet_buffer{};
 xcp::StreamTransport xcp_transport{

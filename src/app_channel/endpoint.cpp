@@ -182,9 +182,9 @@ void Endpoint::set(std::span<const std::uint8_t> request) {
                                      ? ParameterStatus::clamped
                                      : ParameterStatus::applied;
   // Under the lock, so that a task reading a multi-word parameter never sees half of the old and half of the new.
-  const std::uint32_t saved = lock_.lock != nullptr ? lock_.lock() : 0;
+  const std::uint32_t saved = lock_.lock();
   std::memcpy(parameter.address, applied, value.size());
-  if (lock_.unlock != nullptr) lock_.unlock(saved);
+  lock_.unlock(saved);
   answer(index, status);
 }
 

@@ -373,7 +373,7 @@ class FileWriter {
     std::string text =
         "// What the port adds to the slave: the clock that stamps DAQ samples, in microseconds (the A2L's unit); the\n"
         "// copy that writes calibration bytes so that no task sees them half-written; the transmit queue's lock\n"
-        "// against the tasks that queue samples.\n"
+        "// against the tasks that queue samples (on the Cortex-M4 the interrupt mask, which needs nothing here).\n"
         "struct SlavePort {\n"
         "  std::uint32_t (*timestamp)() = nullptr;\n"
         "  duet::xcp::AtomicWrite write_atomically = nullptr;\n"

@@ -19,7 +19,8 @@ namespace cortex_m = duet::cortex_m;
 namespace xcp = duet::xcp;
 namespace app_channel = duet::app_channel;
 
-constexpr xcp::QueueLock interrupt_lock{cortex_m::mask_interrupts, cortex_m::restore_interrupts};
+// The transmit queues' lock: on the Cortex-M4 the interrupt mask, set inline (duet/base/section_lock.hpp).
+constexpr xcp::QueueLock interrupt_lock{};
 
 // The settings below are shared by the model's tasks that send and take the message (rate 10's IpcSend, IPCC_RX1's
 // IpcReceive) and the application channel's handler, which every board runs at its lowest priority. A section at the

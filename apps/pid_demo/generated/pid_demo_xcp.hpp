@@ -77,7 +77,7 @@ inline constexpr duet::xcp::EventChannel events[] = {
 
 // What the port adds to the slave: the clock that stamps DAQ samples, in microseconds (the A2L's unit); the
 // copy that writes calibration bytes so that no task sees them half-written; the transmit queue's lock
-// against the tasks that queue samples.
+// against the tasks that queue samples (on the Cortex-M4 the interrupt mask, which needs nothing here).
 struct SlavePort {
   std::uint32_t (*timestamp)() = nullptr;
   duet::xcp::AtomicWrite write_atomically = nullptr;

@@ -1,23 +1,24 @@
 #pragma once
 // The slave's outgoing packets: a bounded byte ring of [length u16][packet] records, filled by several producers that
 // may preempt each other (tasks sampling DAQ at different interrupt priorities, the command handler) and emptied by
-// one consumer (the transport). Producers write under the port's lock (masked interrupts on the Cortex-M4, a mutex on
+// one consumer (the transport). Producers write under a lock (masked interrupts on the Cortex-M4, a mutex on
 // the PC) and never wait for the consumer: what does not fit is refused, whole, and the caller counts it. The
 // consumer copies packets out without the lock.
 
 #include <atomic>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <span>
 
+#include "duet/base/section_lock.hpp"
+#include "duet/base/shared_order.hpp"
+
 namespace duet::xcp {
 
-// The port's lock around a producer's write: `lock` returns what `unlock` needs to restore (a saved interrupt mask).
-struct QueueLock {
-  std::uint32_t (*lock)() = nullptr;
-  void (*unlock)(std::uint32_t saved) = nullptr;
-};
+// The lock around a producer's write: the interrupt mask on the Cortex-M4, the program's functions elsewhere.
+using QueueLock = SectionLock;
 
 // The little-endian fields and the record header, written through the derived appender's u8().
 template <typename Appender>
@@ -30,7 +31,7 @@ class FieldAppender {
     return u16(static_cast<std::uint16_t>(value)).u16(static_cast<std::uint16_t>(value >> 16U));
   }
   // Starts the record of a packet of `size` bytes; the caller then writes exactly that many.
-  Appender& packet(std::size_t size) { return u16(static_cast<std::uint16_t>(size)); }
+  Appender& packet(std::size_t size) { return self().u16(static_cast<std::uint16_t>(size)); }
 
  private:
   Appender& self() { return static_cast<Appender&>(*this); }
@@ -68,6 +69,9 @@ class TransmitQueue {
   class LinearAppender : public FieldAppender<LinearAppender> {
    public:
     explicit LinearAppender(std::uint8_t* at) : at_(at) {}
+    // Single stores where the compiler would otherwise store the bytes apart (the Cortex-M4 stores unaligned).
+    LinearAppender& u16(std::uint16_t value) { return little_endian(value); }
+    LinearAppender& u32(std::uint32_t value) { return little_endian(value); }
     LinearAppender& u8(std::uint8_t value) {
       *at_++ = value;
       return *this;
@@ -85,6 +89,18 @@ class TransmitQueue {
     }
 
    private:
+    template <typename Word>
+    LinearAppender& little_endian(Word value) {
+      if constexpr (std::endian::native == std::endian::little) {
+        std::memcpy(at_, &value, sizeof value);
+        at_ += sizeof value;
+        return *this;
+      } else {
+        for (std::size_t byte = 0; byte < sizeof value; ++byte) u8(static_cast<std::uint8_t>(value >> (8U * byte)));
+        return *this;
+      }
+    }
+
     std::uint8_t* at_;
   };
 
@@ -96,9 +112,9 @@ class TransmitQueue {
   // Interrupt-safe; never waits.
   template <typename Fill>
   bool push(std::size_t record_bytes, std::size_t headroom, Fill&& fill) {
-    const std::uint32_t saved = lock_.lock != nullptr ? lock_.lock() : 0;
+    const std::uint32_t saved = lock_.lock();
     const std::size_t head = head_.load(std::memory_order_relaxed);
-    const std::size_t used = head - tail_.load(std::memory_order_acquire);
+    const std::size_t used = head - load_acquire(tail_);
     const bool fits = record_bytes + headroom <= ring_.size() - used;
     if (fits) {
       const std::size_t position = head % ring_.size();
@@ -109,9 +125,9 @@ class TransmitQueue {
         Appender appender{ring_, position};
         fill(appender);
       }
-      head_.store(head + record_bytes, std::memory_order_release);
+      store_release(head_, head + record_bytes);
     }
-    if (lock_.unlock != nullptr) lock_.unlock(saved);
+    lock_.unlock(saved);
     return fits;
   }
 
@@ -119,13 +135,11 @@ class TransmitQueue {
   // than `packet` is removed and reported as 0 bytes long (a programming error: size the buffer for MAX_DTO).
   std::size_t pop(std::span<std::uint8_t> packet);
 
-  [[nodiscard]] bool empty() const {
-    return head_.load(std::memory_order_acquire) == tail_.load(std::memory_order_relaxed);
-  }
+  [[nodiscard]] bool empty() const { return load_acquire(head_) == tail_.load(std::memory_order_relaxed); }
   [[nodiscard]] std::size_t capacity() const { return ring_.size(); }
   // Bytes a producer could add now (a snapshot: the consumer may free more meanwhile).
   [[nodiscard]] std::size_t free_bytes() const {
-    return ring_.size() - (head_.load(std::memory_order_relaxed) - tail_.load(std::memory_order_acquire));
+    return ring_.size() - (head_.load(std::memory_order_relaxed) - load_acquire(tail_));
   }
 
  private:
