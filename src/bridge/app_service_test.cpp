@@ -75,7 +75,8 @@ TEST_F(AppServiceTest, ADashboardGetsTheDescriptionTelemetryAndSetsTheGains) {
   EXPECT_EQ((*description)["telemetry"][1]["unit"], "V");
   EXPECT_EQ((*description)["parameters"][2]["name"], "D");
   EXPECT_EQ((*description)["parameters"][2]["type"], "float32");
-  EXPECT_FALSE(description->contains("plant"));  // the board's bridge: no simulated plant behind it
+  EXPECT_FALSE(description->contains("plant"));                   // the board's bridge: no simulated plant behind it
+  EXPECT_EQ((*description)["mdf4"]["recorder"], "recorder.mf4");  // Save as MDF4 (docs/DASHBOARD.md)
 
   const auto sample = client.next("telemetry");
   ASSERT_TRUE(sample);

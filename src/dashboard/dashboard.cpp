@@ -53,10 +53,12 @@ std::optional<double> number_member(const json& object, const char* name, double
 Dashboard::Dashboard(boost::asio::io_context& io, ServerOptions options, Backend backend,
                      std::optional<PlantControlAddress> plant_control)
     : backend_(std::move(backend)),
-      server_(io, std::move(options),
+      server_(io, options,
               ServerHandlers{.joined = [this](Client& client) { welcome(client); },
-                             .request = [this](Client& client, const json& request) { handle(client, request); }}),
-      status_timer_(std::make_unique<Timer>(io)) {
+                             .request = [this](Client& client, const json& request) { handle(client, request); },
+                             .http = [this](const HttpRequest& request) { return answer_http(request); }}),
+      status_timer_(std::make_unique<Timer>(io)),
+      max_upload_size_(options.max_upload_size) {
   if (plant_control) {
     plant_relay_ = std::make_unique<PlantRelay>(
         io, std::move(*plant_control),
@@ -101,6 +103,7 @@ void Dashboard::publish_description() {
   for (const Item& item : description.telemetry) message["telemetry"].push_back(item_json(item));
   for (const Item& item : description.parameters) message["parameters"].push_back(item_json(item));
   if (plant_relay_ && plant_relay_->description()) message["plant"] = *plant_relay_->description();
+  if (json offer = mdf4_offer(); !offer.is_null()) message["mdf4"] = std::move(offer);
   description_message_ = dashboard::message(message);
   server_.broadcast(description_message_, Delivery::always);
 }
@@ -165,6 +168,12 @@ void Dashboard::feed_recorder(double time_s, std::span<const double> values) {
                                         {"values", capture->values}}),
                     Delivery::always);
   server_.broadcast(recorder_message(recorder_.state(), *description_), Delivery::always);
+  if (mdf4_offer().is_null()) return;  // nobody will ask for it
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  last_capture_ = KeptCapture{.capture = std::move(*capture),
+                              .telemetry = description_->telemetry,
+                              .application = description_->application,
+                              .completed_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count()};
 }
 
 void Dashboard::broadcast(const json& message, Delivery delivery) {

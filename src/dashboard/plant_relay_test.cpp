@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "duet/dashboard/dashboard.hpp"
+#include "served_dashboard.hpp"
 #include "served_plant.hpp"
 #include "websocket_client.hpp"
 
@@ -23,29 +24,12 @@ using testing::WebSocketClient;
 
 PlantControlAddress address_of(const ServedPlant& plant) { return {plant.host(), plant.port()}; }
 
-// A back end's dashboard, described as a target would describe itself, serving on a thread.
-class Backend {
+// A back end's dashboard whose target samples theta.
+class Backend : public testing::ServedDashboard {
  public:
-  explicit Backend(std::optional<PlantControlAddress> plant_control) {
-    dashboard.emplace(io, ServerOptions{.log_name = "test"},
-                      dashboard::Backend{.set = [](Client&, const std::string&, double) {},
-                                         .describe = [](Client&) {},
-                                         .status = [] { return json::object(); }},
-                      std::move(plant_control));
-    EXPECT_TRUE(dashboard->start().ok());
-    dashboard->describe({"robot", "bridge", 10000, {{"theta", "deg", "float32", -90, 90}}, {}});
-    thread = std::thread{[this] { io.run(); }};
-  }
-  ~Backend() {
-    asio::post(io, [this] {
-      dashboard->close();
-      io.stop();
-    });
-    thread.join();
-  }
-  asio::io_context io;
-  std::optional<Dashboard> dashboard;
-  std::thread thread;
+  explicit Backend(std::optional<PlantControlAddress> plant_control)
+      : ServedDashboard({"robot", "bridge", 10000, {{"theta", "deg", "float32", -90, 90}}, {}},
+                        std::move(plant_control)) {}
 };
 
 // The first description with (or without) a plant member; later ones follow as the endpoint comes and goes.

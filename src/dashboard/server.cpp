@@ -9,6 +9,7 @@
 #include <chrono>
 #include <deque>
 #include <iostream>
+#include <optional>
 #include <set>
 
 #include "duet/dashboard/static_files.hpp"
@@ -80,6 +81,7 @@ class Server::Impl {
   void handle(WebSocketClient& client, const std::string& text);
 
   const ServerOptions& options() const { return options_; }
+  const ServerHandlers& handlers() const { return handlers_; }
   Server& owner() { return owner_; }
 
  private:
@@ -154,17 +156,20 @@ class Server::Impl::WebSocketClient final : public Client, public std::enable_sh
   bool closing_ = false;
 };
 
-// One HTTP connection: answers GET and HEAD with the front end's files until the client asks to upgrade to
-// WebSocket, which hands the socket over.
+// One HTTP connection: answers the owner's requests (ServerHandlers::http) and GET and HEAD with the front end's
+// files until the client asks to upgrade to WebSocket, which hands the socket over.
 class Server::Impl::HttpSession : public std::enable_shared_from_this<HttpSession> {
  public:
   HttpSession(Impl& server, tcp::socket socket) : server_(server), stream_(std::move(socket)) {}
 
   void read() {
-    request_ = {};
+    parser_.emplace();
+    parser_->body_limit(server_.options().max_upload_size);
     stream_.expires_after(http_patience);
-    http::async_read(stream_, buffer_, request_, [self = shared_from_this()](beast::error_code error, std::size_t) {
+    http::async_read(stream_, buffer_, *parser_, [self = shared_from_this()](beast::error_code error, std::size_t) {
+      if (error == http::error::body_limit) return self->refuse_large_body();
       if (error) return;  // closed, timed out, or not HTTP: nothing to answer
+      self->request_ = self->parser_->release();
       self->answer();
     });
   }
@@ -176,6 +181,11 @@ class Server::Impl::HttpSession : public std::enable_shared_from_this<HttpSessio
       return server_.upgrade(stream_.release_socket(), std::move(request_));
     }
     const bool keep_alive = request_.keep_alive();
+    if (const auto& owners = server_.handlers().http; owners) {
+      auto answer = owners(HttpRequest{std::string{request_.method_string()}, std::string{request_.target()},
+                                       std::move(request_.body())});
+      if (answer) return reply(std::move(*answer), keep_alive);
+    }
     if (request_.method() != http::verb::get && request_.method() != http::verb::head) {
       return reply_text(http::status::method_not_allowed, "GET or HEAD only\n", keep_alive);
     }
@@ -202,6 +212,25 @@ class Server::Impl::HttpSession : public std::enable_shared_from_this<HttpSessio
     response->keep_alive(keep_alive);
     if (request_.method() == http::verb::head) response->body().close();
     ++server_.owner().files_served_;
+    send(response, request_.method() == http::verb::head);
+  }
+
+  // The rest of the body is not read: the connection ends after the answer.
+  void refuse_large_body() {
+    reply_text(http::status::payload_too_large,
+               "the request's body is larger than " + std::to_string(server_.options().max_upload_size) + " bytes\n",
+               false);
+  }
+
+  void reply(HttpAnswer answer, bool keep_alive) {
+    auto response = std::make_shared<http::response<http::string_body>>(http::int_to_status(answer.status), 11);
+    response->set(http::field::content_type, answer.content_type);
+    response->set(http::field::cache_control, "no-store");
+    if (!answer.attachment.empty())
+      response->set(http::field::content_disposition, "attachment; filename=\"" + answer.attachment + "\"");
+    response->body() = std::move(answer.body);
+    response->prepare_payload();
+    response->keep_alive(keep_alive);
     send(response, request_.method() == http::verb::head);
   }
 
@@ -237,6 +266,7 @@ class Server::Impl::HttpSession : public std::enable_shared_from_this<HttpSessio
   Impl& server_;
   beast::tcp_stream stream_;
   beast::flat_buffer buffer_;
+  std::optional<http::request_parser<http::string_body>> parser_;  // anew per request: a parser reads one
   http::request<http::string_body> request_;
 };
 

@@ -12,6 +12,8 @@
 #include <fstream>
 #include <thread>
 
+#include "http_client.hpp"
+
 namespace duet::dashboard {
 namespace {
 
@@ -46,16 +48,7 @@ class ServerTest : public ::testing::Test {
   }
 
   http::response<http::string_body> get(const std::string& target) {
-    asio::io_context client_io;
-    beast::tcp_stream stream{client_io};
-    stream.connect({asio::ip::make_address("127.0.0.1"), server->port()});
-    http::request<http::empty_body> request{http::verb::get, target, 11};
-    request.set(http::field::host, "127.0.0.1");
-    http::write(stream, request);
-    beast::flat_buffer buffer;
-    http::response<http::string_body> response;
-    http::read(stream, buffer, response);
-    return response;
+    return testing::http_request(server->port(), http::verb::get, target);
   }
 
   std::filesystem::path root = std::filesystem::temp_directory_path() / ("duet-server-" + std::to_string(::getpid()));
@@ -122,6 +115,32 @@ TEST(ServerAddress, ATakenPortIsAClearFailure) {
   const Status started = second.start();
   ASSERT_FALSE(started.ok());
   EXPECT_NE(started.error().find("cannot listen on 127.0.0.1:"), std::string::npos);
+}
+
+TEST(ServerOwnersRequests, TheOwnerAnswersItsOwnPathsAndARequestPastTheBodyLimitIsRefused) {
+  asio::io_context io;
+  Server server{io, ServerOptions{.max_upload_size = 100},
+                ServerHandlers{.http = [](const HttpRequest& request) -> std::optional<HttpAnswer> {
+                  if (request.target != "/echo.bin") return std::nullopt;
+                  return HttpAnswer{.status = 200,
+                                    .content_type = "application/octet-stream",
+                                    .body = request.method + " " + request.body,
+                                    .attachment = "echo.bin"};
+                }}};
+  ASSERT_TRUE(server.start().ok());
+  std::thread thread{[&io] { io.run(); }};
+  const auto echoed = testing::http_request(server.port(), http::verb::post, "/echo.bin", "hello");
+  EXPECT_EQ(echoed.result(), http::status::ok);
+  EXPECT_EQ(echoed.body(), "POST hello");
+  EXPECT_EQ(echoed[http::field::content_disposition], "attachment; filename=\"echo.bin\"");
+  const auto large = testing::http_request(server.port(), http::verb::post, "/echo.bin", std::string(101, 'x'));
+  EXPECT_EQ(large.result(), http::status::payload_too_large);
+  EXPECT_NE(large.body().find("larger than 100 bytes"), std::string::npos);
+  // Paths the owner does not answer are the front end's files, which take no POST.
+  EXPECT_EQ(testing::http_request(server.port(), http::verb::post, "/other", "x").result(),
+            http::status::method_not_allowed);
+  asio::post(io, [&io] { io.stop(); });
+  thread.join();
 }
 
 }  // namespace

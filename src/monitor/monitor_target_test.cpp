@@ -9,6 +9,9 @@
 #include <cstring>
 #include <thread>
 
+#include "duet/mdf4/reader.hpp"
+#include "duet/mdf4/summary.hpp"
+#include "http_client.hpp"
 #include "served_plant.hpp"
 #include "test_target.hpp"
 #include "websocket_client.hpp"
@@ -140,6 +143,18 @@ TEST_F(MonitorTargetTest, TheRecorderTriggersOnTheDaqSamples) {
   const auto idle = client.next("recorder");
   ASSERT_TRUE(idle);
   EXPECT_EQ((*idle)["state"], "idle");
+
+  // Saved as MDF4 (docs/DASHBOARD.md): the counter in the A2L MEASUREMENT's type.
+  namespace http = boost::beast::http;
+  const auto file = dashboard::testing::http_request(monitor->port(), http::verb::get, "/recorder.mf4");
+  ASSERT_EQ(file.result(), http::status::ok) << file.body();
+  auto reader = mdf4::Reader::from_bytes({file.body().begin(), file.body().end()});
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  const mdf4::GroupInfo& group = reader.value().info().groups.at(0);
+  EXPECT_EQ(group.samples, 31U);
+  ASSERT_GE(group.channels.size(), 2U);
+  EXPECT_EQ(group.channels[1].name, "counter");
+  EXPECT_EQ(mdf4::type_text(group.channels[1]), "u32");
 }
 
 TEST_F(MonitorTargetTest, StatusSaysTheLinkIsOpen) {

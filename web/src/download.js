@@ -1,6 +1,11 @@
 // Offers `text` as a file download, without a server round trip.
 export function downloadText(filename, text, type = 'text/plain') {
-  const url = URL.createObjectURL(new Blob([text], { type }));
+  downloadBlob(filename, new Blob([text], { type }));
+}
+
+// Offers `blob` (the page's own, or what the back end answered) as a file download.
+export function downloadBlob(filename, blob) {
+  const url = URL.createObjectURL(blob);
   const link = document.createElement('a');
   link.href = url;
   link.download = filename;

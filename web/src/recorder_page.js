@@ -7,7 +7,7 @@ import { formatNumber } from './number_format.js';
 
 // The Recorder page: arms the back end's triggered capture and plots what it sends back, on a
 // time axis relative to the trigger (0 = the trigger, marked by a line).
-export function createRecorderPage({ hub, connection }) {
+export function createRecorderPage({ hub, connection, mdf4 }) {
   const form = document.getElementById('recorder-form');
   const signalSelect = document.getElementById('recorder-signal');
   const levelField = document.getElementById('recorder-level');
@@ -18,6 +18,7 @@ export function createRecorderPage({ hub, connection }) {
   const settingsText = document.getElementById('recorder-settings');
   const captureInfo = document.getElementById('recorder-capture-info');
   const exportButton = document.getElementById('recorder-export');
+  const mdf4Button = document.getElementById('recorder-mdf4');
   const message = document.getElementById('recorder-message');
   let signals = [];
   let capture = null;
@@ -53,6 +54,7 @@ export function createRecorderPage({ hub, connection }) {
     signals = (description.telemetry ?? []).map((item, index) => ({ ...item, index }));
     replaceChildren(signalSelect, signals.map((signal) => element('option', { value: signal.name }, signal.unit ? `${signal.name} [${signal.unit}]` : signal.name)));
     if (signals.some((signal) => signal.name === previous)) signalSelect.value = previous;
+    mdf4Button.hidden = !mdf4.available;
   });
 
   form.addEventListener('submit', (event) => {
@@ -89,6 +91,7 @@ export function createRecorderPage({ hub, connection }) {
   hub.on('capture', (next) => {
     capture = next;
     exportButton.disabled = false;
+    mdf4Button.disabled = false;
     captureInfo.textContent = `${next.signal} ${next.edge} through ${formatNumber(next.level)} at ${formatNumber(next.trigger_time_s, 9)} s, ${next.time_s?.length ?? 0} samples`;
     if (visible) plotCapture();
   });
@@ -97,6 +100,15 @@ export function createRecorderPage({ hub, connection }) {
     if (!capture) return;
     const columns = capturedSignals(capture).map((signal) => ({ name: signal.name, unit: signal.unit, values: capture.values[signal.index] }));
     downloadText(`capture-${capture.signal}-${timestampForFile()}.csv`, signalsCsv(capture.time_s, columns), 'text/csv');
+  });
+
+  // The back end keeps the capture it sent last and writes it; this page shows that capture too.
+  mdf4Button.addEventListener('click', async () => {
+    mdf4Button.disabled = true;
+    say('writing the MDF4 file…');
+    const { ok, message: result } = await mdf4.recorder();
+    mdf4Button.disabled = false;
+    say(result, ok ? 'muted' : 'bad');
   });
 
   function capturedSignals(which) {

@@ -6,13 +6,15 @@ import { downloadText, timestampForFile } from './download.js';
 
 const default_signal_count = 8;
 
-// The Scope page: signal choice, window length, pause, CSV export around a ScopeView.
-export function createScopePage({ hub, stats }) {
+// The Scope page: signal choice, window length, pause, CSV and MDF4 export around a ScopeView.
+export function createScopePage({ hub, stats, mdf4 }) {
   const checkboxes = document.getElementById('scope-signals');
   const summary = document.getElementById('scope-signals-summary');
   const windowSelect = document.getElementById('scope-window');
   const pauseButton = document.getElementById('scope-pause');
   const exportButton = document.getElementById('scope-export');
+  const mdf4Button = document.getElementById('scope-mdf4');
+  const message = document.getElementById('scope-message');
   const view = new ScopeView(document.getElementById('scope-plot'), stats);
   let chosen = null; // names, kept across descriptions of the same signals
 
@@ -55,11 +57,34 @@ export function createScopePage({ hub, stats }) {
     view.setPaused(!view.paused);
     showPaused();
   });
-  exportButton.addEventListener('click', () => {
+  // What the exports hold: every sample the scope has of the signals shown.
+  const shownColumns = () => {
     const source = view.source();
-    if (!source || view.signals.length === 0) return;
-    const columns = view.signals.map((signal) => ({ name: signal.name, unit: signal.unit, values: source.values[signal.index] }));
-    downloadText(`scope-${timestampForFile()}.csv`, signalsCsv(source.time, columns), 'text/csv');
+    if (!source || view.signals.length === 0) return null;
+    return { time: source.time, columns: view.signals.map((signal) => ({ name: signal.name, unit: signal.unit, values: source.values[signal.index] })) };
+  };
+  exportButton.addEventListener('click', () => {
+    const shown = shownColumns();
+    if (shown) downloadText(`scope-${timestampForFile()}.csv`, signalsCsv(shown.time, shown.columns), 'text/csv');
+  });
+  hub.on('description', () => {
+    mdf4Button.hidden = !mdf4.available;
+  });
+  mdf4Button.addEventListener('click', async () => {
+    const shown = shownColumns();
+    if (!shown || shown.time.length === 0) {
+      message.textContent = 'nothing to save yet';
+      message.className = 'message bad';
+      return;
+    }
+    mdf4Button.disabled = true;
+    message.textContent = 'writing the MDF4 file…';
+    message.className = 'message muted';
+    // The request is built from copies taken now: the rings go on filling while it is on its way.
+    const { ok, message: result } = await mdf4.scope(shown.time, shown.columns);
+    mdf4Button.disabled = false;
+    message.textContent = result;
+    message.className = `message ${ok ? 'muted' : 'bad'}`;
   });
 
   return {

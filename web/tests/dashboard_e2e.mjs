@@ -4,17 +4,19 @@
 //
 //   node tests/dashboard_e2e.mjs --url http://127.0.0.1:PORT/ --artefacts DIR
 //        [--parameter P --value 0.05] [--signal theta] [--trigger-level 0|auto] [--timeout-s 30] [--expect-tasks yes]
-//        [--plant push|none]
+//        [--plant push|none] [--mdf4 save|none]
 //
 // --plant push: a simulated plant is behind the target; the Disturb box pushes it (a value out of limits is refused
 // on the page first) and restarts it, each answered with its model time. --plant none: the page shows no Disturb box.
+// --mdf4 save: the Scope's and the Recorder's "Save as MDF4" download MDF files from the back end; --mdf4 none: the
+// buttons are hidden (a back end that writes no MDF4, the mock).
 // Prints one JSON line of results; exits 0 when every check passed, 1 naming the failed step.
-import { mkdir } from 'node:fs/promises';
+import { mkdir, readFile } from 'node:fs/promises';
 import path from 'node:path';
 import { launchChromium, parseOptions, waitFor } from './browser.mjs';
 
-const usage = 'usage: dashboard_e2e.mjs --url URL --artefacts DIR [--parameter P] [--value V] [--signal NAME] [--trigger-level L|auto] [--timeout-s S] [--expect-tasks yes] [--plant push|none]';
-const options = parseOptions(process.argv.slice(2), { url: '', artefacts: '', parameter: 'P', value: '0.05', signal: 'theta', 'trigger-level': '0', 'timeout-s': '30', 'expect-tasks': 'no', plant: '' }, usage);
+const usage = 'usage: dashboard_e2e.mjs --url URL --artefacts DIR [--parameter P] [--value V] [--signal NAME] [--trigger-level L|auto] [--timeout-s S] [--expect-tasks yes] [--plant push|none] [--mdf4 save|none]';
+const options = parseOptions(process.argv.slice(2), { url: '', artefacts: '', parameter: 'P', value: '0.05', signal: 'theta', 'trigger-level': '0', 'timeout-s': '30', 'expect-tasks': 'no', plant: '', mdf4: '' }, usage);
 if (!options.url || !options.artefacts) {
   console.error(usage);
   process.exit(2);
@@ -107,6 +109,7 @@ try {
   results.samples = after.samples;
   results.frames = after.frames;
   results.frames_per_s = Math.round(((after.frames - before.frames) / 1.5) * 10) / 10;
+  if (options.mdf4) results.scope_mdf4 = await saveAsMdf4(page, '#scope-mdf4', options.mdf4);
   await shot('scope.png');
   await page.setViewportSize({ width: 1280, height: 800 });
   await page.waitForTimeout(600);
@@ -149,6 +152,7 @@ try {
   if ((await page.locator('#recorder-plot canvas').count()) === 0) throw new Error('the capture has no chart');
   results.captured = captured;
   results.recorder_state = await page.textContent('#recorder-state');
+  if (options.mdf4) results.recorder_mdf4 = await saveAsMdf4(page, '#recorder-mdf4', options.mdf4);
   await shot('recorder.png');
 
   step = 'showing the status';
@@ -182,6 +186,22 @@ try {
 
 // The Disturb box: a push out of limits is refused on the page; a push and a restart are answered with the model time
 // they act from, the restart's no earlier than the push's.
+// `save`: the button downloads an MDF file (its name and size); `none`: the button is hidden.
+async function saveAsMdf4(page, button, expected) {
+  step = `${expected === 'save' ? 'saving' : 'not offering'} an MDF4 file (${button})`;
+  if (expected === 'none') {
+    if (await page.isVisible(button)) throw new Error(`${button} shows, though the back end writes no MDF4`);
+    return 'hidden';
+  }
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: 20000 }), page.click(button)]);
+  const file = await download.path();
+  const bytes = await readFile(file);
+  const identification = bytes.subarray(0, 8).toString('latin1');
+  if (identification !== 'MDF     ') throw new Error(`${download.suggestedFilename()} starts with "${identification}", not "MDF     "`);
+  if (!download.suggestedFilename().endsWith('.mf4')) throw new Error(`the file is named ${download.suggestedFilename()}`);
+  return { name: download.suggestedFilename(), bytes: bytes.length };
+}
+
 async function disturbThePlant(page, timeoutMs) {
   step = 'showing the Disturb box';
   await page.waitForSelector('#plant-controls:not([hidden]) [data-plant-action="push"]', { timeout: timeoutMs });

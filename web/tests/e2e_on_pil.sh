@@ -57,7 +57,7 @@ else
 fi
 
 node "$web/tests/dashboard_e2e.mjs" --url "$page" --artefacts "$artefacts" --parameter P --value "$value" \
-  --signal theta --trigger-level auto --timeout-s 40 --expect-tasks yes --plant push
+  --signal theta --trigger-level auto --timeout-s 40 --expect-tasks yes --plant push --mdf4 save
 
 if [[ $backend == bridge ]]; then
   # What the firmware took from the application channel, read over XCP through the bridge.

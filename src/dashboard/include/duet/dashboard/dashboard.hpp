@@ -95,6 +95,20 @@ class Dashboard {
   [[nodiscard]] Message recorder_message(Recorder::State state, const Description& description) const;
   void tick_status();
   [[nodiscard]] nlohmann::json status() const;
+  // The MDF4 files (mdf4_downloads.cpp): GET recorder.mf4, the last capture; POST scope.mf4, the Scope's samples.
+  // The description's `mdf4` member: where they are; null where they are not (no_mdf4_downloads.cpp).
+  [[nodiscard]] nlohmann::json mdf4_offer() const;
+  [[nodiscard]] std::optional<HttpAnswer> answer_http(const HttpRequest& request) const;
+  [[nodiscard]] HttpAnswer recorder_file() const;
+  [[nodiscard]] HttpAnswer scope_file(const std::string& body) const;
+
+  // The last capture, with the signals it had when it was taken, for recorder.mf4.
+  struct KeptCapture {
+    Capture capture;
+    std::vector<Item> telemetry;
+    std::string application;
+    std::int64_t completed_ns = 0;  // the back end's clock, ns since 1970
+  };
 
   Backend backend_;
   Server server_;
@@ -104,6 +118,8 @@ class Dashboard {
   Message description_message_;
   std::vector<std::optional<double>> parameter_values_;
   Recorder recorder_;
+  std::optional<KeptCapture> last_capture_;
+  std::size_t max_upload_size_;
   std::unique_ptr<PlantRelay> plant_relay_;
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 // The dashboard's server: the front end's files over HTTP and the JSON protocol over WebSocket, on one port
-// (docs/DASHBOARD.md). What the messages say is the back end's business (the bridge's application channel, duet
-// monitor's XCP master); this is the serving: files from one folder only, a bounded queue per client that drops
-// what may be dropped (samples, status) and never what may not, at most `max_clients` clients.
-// Runs on the caller's io_context; every member is called on that context's thread, except the counters.
+// (docs/DASHBOARD.md), and the few HTTP requests its owner answers (the MDF4 files). What the messages say is the back
+// end's business (the bridge's application channel, duet monitor's XCP master); this is the serving: files from one
+// folder only, a bounded queue per client that drops what may be dropped (samples, status) and never what may not, at
+// most `max_clients` clients. Runs on the caller's io_context; every member is called on that context's thread, except
+// the counters.
 
 #include <nlohmann/json_fwd.hpp>
 
@@ -12,6 +13,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "duet/support/result.hpp"
@@ -27,8 +29,9 @@ struct ServerOptions {
   std::uint16_t port = 0;          // 0: any free port
   std::filesystem::path web_root;  // the built front end (web/dist); empty: WebSocket only
   std::string log_name = "dashboard";
-  std::string index = "index.html";     // the page "/" is
-  std::size_t max_request_size = 4096;  // bytes of one WebSocket request
+  std::string index = "index.html";                     // the page "/" is
+  std::size_t max_request_size = 4096;                  // bytes of one WebSocket request
+  std::size_t max_upload_size = std::size_t{32} << 20;  // bytes of an HTTP request's body (answered 413 past it)
 };
 
 enum class Delivery { droppable, always };
@@ -46,9 +49,24 @@ class Client {
   [[nodiscard]] virtual std::weak_ptr<Client> handle() = 0;
 };
 
+struct HttpRequest {
+  std::string method;  // GET, HEAD, POST, ...
+  std::string target;  // the path with its query
+  std::string body;
+};
+
+struct HttpAnswer {
+  unsigned status = 200;
+  std::string content_type;
+  std::string body;
+  std::string attachment;  // a file name: the body is a download of that name
+};
+
 struct ServerHandlers {
   std::function<void(Client&)> joined;                          // send the welcome
   std::function<void(Client&, const nlohmann::json&)> request;  // a JSON object with a string `type`
+  // An HTTP request the owner answers itself; none: the front end's files answer it.
+  std::function<std::optional<HttpAnswer>(const HttpRequest&)> http;
 };
 
 class Server {
