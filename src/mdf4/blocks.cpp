@@ -81,7 +81,9 @@ Result<Block> BlockReader::header(std::uint64_t offset, std::initializer_list<st
   if (block.length > size - offset)
     return Failure{here(offset) + ": " + what + " of length " + std::to_string(block.length) +
                    " runs past the end of the file (" + std::to_string(size) + " bytes)"};
-  block.links.resize(link_count);
+  if (link_count > longest_metadata_block / 8)
+    return Failure{here(offset) + ": " + what + " has implausibly many links (" + std::to_string(link_count) + ")"};
+  block.links.resize(static_cast<std::size_t>(link_count));
   return block;
 }
 
@@ -94,7 +96,7 @@ Result<Block> BlockReader::read(std::uint64_t offset, std::initializer_list<std:
   if (block.length > longest_metadata_block)
     return Failure{here(offset) + ": " + what + " of length " + std::to_string(block.length) + " is implausibly long"};
   if (Status claimed = claim(offset, block.length, what); !claimed) return Failure{claimed.error()};
-  std::vector<std::uint8_t> rest(block.length - format::header_size);
+  std::vector<std::uint8_t> rest(static_cast<std::size_t>(block.length - format::header_size));  // not too long
   if (!source_.read(offset + format::header_size, rest.data(), rest.size()))
     return Failure{here(offset) + ": cannot read"};
   for (std::size_t index = 0; index < block.links.size(); ++index)

@@ -25,7 +25,7 @@ struct Block {
   [[nodiscard]] std::uint64_t link(std::size_t index) const { return index < links.size() ? links[index] : 0; }
   // A field of the data section; 0 beyond its end (callers check data.size() where a field is required).
   template <typename T>
-  [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] [[nodiscard]] T field(std::uint64_t at) const {
+  [[nodiscard]] T field(std::uint64_t at) const {
     return at + sizeof(T) <= data.size() ? load<T>(data.data() + at) : T{};
   }
 };

@@ -20,14 +20,14 @@ class FileSource final : public ByteSource {
 
   [[nodiscard]] std::uint64_t size() const override { return size_; }
   [[nodiscard]] const std::string& name() const override { return name_; }
-  bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const override {
+  bool read(std::uint64_t offset, std::uint8_t* into, std::size_t count) const override {
     while (count > 0) {
       const ssize_t got = ::pread(file_, into, count, static_cast<off_t>(offset));
       if (got < 0 && errno == EINTR) continue;
       if (got <= 0) return false;  // an error, or the file shrank under us
       into += got;
       offset += static_cast<std::uint64_t>(got);
-      count -= static_cast<std::uint64_t>(got);
+      count -= static_cast<std::size_t>(got);
     }
     return true;
   }
@@ -43,7 +43,7 @@ class MemorySource final : public ByteSource {
   MemorySource(std::vector<std::uint8_t> bytes, std::string name) : bytes_(std::move(bytes)), name_(std::move(name)) {}
   [[nodiscard]] std::uint64_t size() const override { return bytes_.size(); }
   [[nodiscard]] const std::string& name() const override { return name_; }
-  bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const override {
+  bool read(std::uint64_t offset, std::uint8_t* into, std::size_t count) const override {
     if (count > 0) std::memcpy(into, bytes_.data() + offset, count);
     return true;
   }

@@ -16,7 +16,7 @@ class ByteSource {
   virtual ~ByteSource() = default;
   [[nodiscard]] virtual std::uint64_t size() const = 0;
   // Precondition: offset + count <= size(). Returns false only if the read itself fails.
-  virtual bool read(std::uint64_t offset, std::uint8_t* into, std::uint64_t count) const = 0;
+  virtual bool read(std::uint64_t offset, std::uint8_t* into, std::size_t count) const = 0;
   [[nodiscard]] virtual const std::string& name() const = 0;
 };
 

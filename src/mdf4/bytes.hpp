@@ -28,12 +28,12 @@ void store(std::uint8_t* bytes, T value) {
 // Bytes appended at the end, or put at a place already written.
 class ByteBuffer {
  public:
-  [[nodiscard]] std::uint64_t size() const { return bytes_.size(); }
+  [[nodiscard]] std::size_t size() const { return bytes_.size(); }
   std::vector<std::uint8_t>& bytes() { return bytes_; }
   void append_text(std::string_view text) {
     if (!text.empty()) std::memcpy(grow(text.size()), text.data(), text.size());
   }
-  void append_zeros(std::uint64_t count) {
+  void append_zeros(std::size_t count) {
     if (count > 0) std::memset(grow(count), 0, count);
   }
   template <typename T>
@@ -44,11 +44,11 @@ class ByteBuffer {
   void put(std::uint64_t at, T value) {
     store(bytes_.data() + at, value);
   }
-  void align(std::uint64_t alignment) { append_zeros((alignment - size() % alignment) % alignment); }
+  void align(std::size_t alignment) { append_zeros((alignment - bytes_.size() % alignment) % alignment); }
 
  private:
   // Room for `count` more bytes at the end, uninitialised as far as callers are concerned.
-  std::uint8_t* grow(std::uint64_t count) {
+  std::uint8_t* grow(std::size_t count) {
     const std::size_t at = bytes_.size();
     if (bytes_.capacity() < at + count) bytes_.reserve(std::max<std::size_t>(2 * bytes_.capacity(), at + count));
     bytes_.resize(at + count);

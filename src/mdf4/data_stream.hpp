@@ -19,11 +19,11 @@ class DataStream {
  public:
   DataStream(const ByteSource& source, const std::vector<DataPiece>& pieces) : source_(source), pieces_(pieces) {}
   // The next `count` bytes, valid until the next call; empty if the stream holds fewer (or a read failed: failed()).
-  std::span<const std::uint8_t> next(std::uint64_t count);
+  std::span<const std::uint8_t> next(std::size_t count);
   [[nodiscard]] bool failed() const { return failed_; }
 
  private:
-  bool refill(std::uint64_t wanted);
+  bool refill(std::size_t wanted);
 
   const ByteSource& source_;
   const std::vector<DataPiece>& pieces_;

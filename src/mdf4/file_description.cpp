@@ -48,14 +48,14 @@ class ImageBuilder {
   explicit ImageBuilder(ByteBuffer& image) : image_(image) {}
 
   // A block of `links` NIL links and `data_size` zero bytes of data, 8-byte aligned; returns its offset.
-  std::uint64_t block(std::string_view id, unsigned links, std::uint64_t data_size) {
+  std::uint64_t block(std::string_view id, unsigned links, std::size_t data_size) {
     image_.align(format::alignment);
     const std::uint64_t at = image_.size();
     image_.append_text(id);
     image_.append<std::uint32_t>(0);
     image_.append<std::uint64_t>(format::header_size + 8 * std::uint64_t{links} + data_size);
     image_.append<std::uint64_t>(links);
-    image_.append_zeros(8 * std::uint64_t{links} + data_size);
+    image_.append_zeros(8 * std::size_t{links} + data_size);
     return at;
   }
   void link(std::uint64_t block, unsigned index, std::uint64_t target) {
@@ -71,7 +71,7 @@ class ImageBuilder {
     if (text.empty() && id == "##TX") return 0;
     const std::string key = std::string{id} + std::string{text};
     if (const auto found = texts_.find(key); found != texts_.end()) return found->second;
-    const std::uint64_t padded = (text.size() + 1 + 7) / 8 * 8;
+    const std::size_t padded = (text.size() + 1 + 7) / 8 * 8;
     const std::uint64_t at = block(id, 0, padded);
     std::copy(text.begin(), text.end(), image_.bytes().begin() + static_cast<std::ptrdiff_t>(at + format::header_size));
     texts_.emplace(key, at);

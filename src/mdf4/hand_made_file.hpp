@@ -25,9 +25,9 @@ class HandMadeFile {
   }
 
   // A block with the common header, `links` zero links and `data_size` zero bytes of data, 8-byte aligned.
-  std::uint64_t block(std::string_view id, std::uint64_t links, std::uint64_t data_size, bool align = true) {
+  std::size_t block(std::string_view id, std::size_t links, std::size_t data_size, bool align = true) {
     if (align) bytes.resize((bytes.size() + 7) / 8 * 8, 0);
-    const std::uint64_t at = bytes.size();
+    const std::size_t at = bytes.size();
     text(id);
     bytes.resize(at + 24 + 8 * links + data_size, 0);
     put<std::uint64_t>(at + 8, 24 + 8 * links + data_size);
@@ -35,21 +35,21 @@ class HandMadeFile {
     return at;
   }
   // A text block, zero-terminated; `padded`: its length rounded up to 8 as asammdf writes it, else 24 + size + 1.
-  std::uint64_t tx(std::string_view content, std::string_view id = "##TX", bool padded = true) {
-    const std::uint64_t size = padded ? (content.size() + 8) / 8 * 8 : content.size() + 1;
-    const std::uint64_t at = block(id, 0, size);
+  std::size_t tx(std::string_view content, std::string_view id = "##TX", bool padded = true) {
+    const std::size_t size = padded ? (content.size() + 8) / 8 * 8 : content.size() + 1;
+    const std::size_t at = block(id, 0, size);
     std::memcpy(bytes.data() + at + 24, content.data(), content.size());
     return at;
   }
   template <typename T>
-  void put(std::uint64_t at, T value) {
+  void put(std::size_t at, T value) {
     std::memcpy(bytes.data() + at, &value, sizeof value);
   }
-  void link(std::uint64_t block, unsigned index, std::uint64_t target) {
-    put<std::uint64_t>(block + 24 + 8 * std::uint64_t{index}, target);
+  void link(std::size_t block, unsigned index, std::uint64_t target) {
+    put<std::uint64_t>(block + 24 + 8 * std::size_t{index}, target);
   }
   template <typename T>
-  T get(std::uint64_t at) const {
+  T get(std::size_t at) const {
     T value;
     std::memcpy(&value, bytes.data() + at, sizeof value);
     return value;
@@ -61,18 +61,18 @@ class HandMadeFile {
   }
 
   // HD at 64 (6 links, 104 bytes), returning its offset.
-  std::uint64_t header() { return block("##HD", 6, 32); }
+  std::size_t header() { return block("##HD", 6, 32); }
   // DG: 4 links, record id size at 56.
-  std::uint64_t data_group(std::uint8_t record_id_size = 0) {
-    const std::uint64_t at = block("##DG", 4, 8);
+  std::size_t data_group(std::uint8_t record_id_size = 0) {
+    const std::size_t at = block("##DG", 4, 8);
     put<std::uint8_t>(at + 56, record_id_size);
     return at;
   }
   // CG: 6 links (7 with 4.2's remote master), then record id, cycle count, flags, ..., data bytes, invalidation bytes.
-  std::uint64_t channel_group(std::uint64_t record_id, std::uint64_t cycles, std::uint32_t data_bytes,
-                              std::uint32_t invalidation_bytes, unsigned links = 6) {
-    const std::uint64_t at = block("##CG", links, 32);
-    const std::uint64_t data = at + 24 + 8 * std::uint64_t{links};
+  std::size_t channel_group(std::uint64_t record_id, std::uint64_t cycles, std::uint32_t data_bytes,
+                            std::uint32_t invalidation_bytes, unsigned links = 6) {
+    const std::size_t at = block("##CG", links, 32);
+    const std::size_t data = at + 24 + 8 * std::size_t{links};
     put<std::uint64_t>(data, record_id);
     put<std::uint64_t>(data + 8, cycles);
     put<std::uint32_t>(data + 24, data_bytes);
@@ -80,9 +80,9 @@ class HandMadeFile {
     return at;
   }
   // CN: 8 links, data at 88: type, sync, data type, bit offset, byte offset, bit count, flags, invalidation bit.
-  std::uint64_t channel(std::string_view name, std::uint8_t type, std::uint8_t data_type, std::uint32_t byte_offset,
-                        std::uint32_t bit_count, std::uint8_t bit_offset = 0) {
-    const std::uint64_t at = block("##CN", 8, 72);
+  std::size_t channel(std::string_view name, std::uint8_t type, std::uint8_t data_type, std::uint32_t byte_offset,
+                      std::uint32_t bit_count, std::uint8_t bit_offset = 0) {
+    const std::size_t at = block("##CN", 8, 72);
     put<std::uint8_t>(at + 88, type);
     put<std::uint8_t>(at + 89, type == 2 || type == 3 ? 1 : 0);
     put<std::uint8_t>(at + 90, data_type);
@@ -92,8 +92,8 @@ class HandMadeFile {
     link(at, 2, tx(name));
     return at;
   }
-  std::uint64_t data_block(const std::vector<std::uint8_t>& records) {
-    const std::uint64_t at = block("##DT", 0, records.size());
+  std::size_t data_block(const std::vector<std::uint8_t>& records) {
+    const std::size_t at = block("##DT", 0, records.size());
     if (!records.empty()) std::memcpy(bytes.data() + at + 24, records.data(), records.size());
     return at;
   }

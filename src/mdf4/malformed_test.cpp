@@ -30,28 +30,33 @@ std::vector<std::uint8_t> valid_file() {
 }
 
 template <typename T>
-T get(const std::vector<std::uint8_t>& bytes, std::uint64_t at) {
+T get(const std::vector<std::uint8_t>& bytes, std::size_t at) {
   T value;
   std::memcpy(&value, bytes.data() + at, sizeof value);
   return value;
 }
 template <typename T>
-void put(std::vector<std::uint8_t>& bytes, std::uint64_t at, T value) {
+void put(std::vector<std::uint8_t>& bytes, std::size_t at, T value) {
   std::memcpy(bytes.data() + at, &value, sizeof value);
+}
+
+// A link of the valid file, which is small: a position in its bytes.
+std::size_t position(const std::vector<std::uint8_t>& bytes, std::size_t at) {
+  return static_cast<std::size_t>(get<std::uint64_t>(bytes, at));
 }
 
 // Where the valid file's blocks are, found through its links (offsets of the format's tables).
 struct Places {
   explicit Places(const std::vector<std::uint8_t>& bytes)
-      : dg(get<std::uint64_t>(bytes, 64 + 24)),
-        fh(get<std::uint64_t>(bytes, 64 + 32)),
-        cg(get<std::uint64_t>(bytes, dg + 32)),
-        dl(get<std::uint64_t>(bytes, dg + 40)),
-        time(get<std::uint64_t>(bytes, cg + 32)),
-        value(get<std::uint64_t>(bytes, time + 24)),
-        dt(get<std::uint64_t>(bytes, dl + 32)),
-        next_dl(get<std::uint64_t>(bytes, dl + 24)) {}
-  std::uint64_t dg, fh, cg, dl, time, value, dt, next_dl;
+      : dg(position(bytes, 64 + 24)),
+        fh(position(bytes, 64 + 32)),
+        cg(position(bytes, dg + 32)),
+        dl(position(bytes, dg + 40)),
+        time(position(bytes, cg + 32)),
+        value(position(bytes, time + 24)),
+        dt(position(bytes, dl + 32)),
+        next_dl(position(bytes, dl + 24)) {}
+  std::size_t dg, fh, cg, dl, time, value, dt, next_dl;
 };
 
 struct Case {
@@ -134,6 +139,9 @@ TEST(Mdf4Malformed, EachDamageIsNamed) {
          put<std::uint32_t>(bytes, at.cg + 100, 0);
        },
        ": ##CG block: its records have no bytes"},
+      {"records longer than a reader allocates",
+       [](auto& bytes, const Places& at) { put<std::uint32_t>(bytes, at.cg + 96, 0xFFFF'FFF0U); },
+       ": ##CG block: its records of 4294967281 bytes are implausibly long"},
       {"a bad record id size", [](auto& bytes, const Places& at) { bytes[at.dg + 56] = 3; },
        ": ##DG block's record id size 3 is not 0, 1, 2, 4 or 8"},
       {"a list counting more blocks than it links",
@@ -167,10 +175,10 @@ TEST(Mdf4Malformed, EachDamageIsNamed) {
 // Unsorted records whose id no group has, in a finalised file.
 TEST(Mdf4Malformed, AnUnknownRecordId) {
   HandMadeFile file;
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group(1);
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group(1);
   file.link(header, 0, group);
-  const std::uint64_t channel_group = file.channel_group(1, 1, 1, 0);
+  const std::size_t channel_group = file.channel_group(1, 1, 1, 0);
   file.link(group, 1, channel_group);
   file.link(channel_group, 1, file.channel("n", 0, 0, 0, 8));
   file.link(group, 2, file.data_block({1, 10, 7, 11}));

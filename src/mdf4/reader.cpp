@@ -14,6 +14,9 @@
 namespace duet::mdf4 {
 namespace {
 
+// Longer records than any recorder writes, and more than a 32-bit reader should allocate for one.
+constexpr std::uint64_t longest_record = std::uint64_t{64} << 20;
+
 // A data group: its channel groups (several only when records carry ids), and where its records are.
 struct DataGroup {
   std::uint64_t offset = 0;
@@ -179,8 +182,10 @@ struct Reader::State {
     group.data_bytes = block.field<std::uint32_t>(data + format::cg::data_bytes);
     group.invalidation_bytes = block.field<std::uint32_t>(data + format::cg::invalidation_bytes);
     if ((flags & 1u) != 0) return Failure{where + ": variable-length (VLSD) channel groups are not supported"};
-    if (std::uint64_t{group.data_bytes} + group.invalidation_bytes == 0)
-      return Failure{where + ": its records have no bytes"};
+    const std::uint64_t record_bytes = std::uint64_t{group.data_bytes} + group.invalidation_bytes;
+    if (record_bytes == 0) return Failure{where + ": its records have no bytes"};
+    if (record_bytes > longest_record)
+      return Failure{where + ": its records of " + std::to_string(record_bytes) + " bytes are implausibly long"};
     auto name = blocks.text(block.link(format::cg::acquisition_name),
                             "the acquisition name of the ##CG at " + hex(block.offset));
     if (!name) return Failure{name.error()};
@@ -396,7 +401,7 @@ struct Reader::State {
                        std::to_string(id) + ", which no ##CG of it has"};
       }
       const GroupInfo& info_group = info.groups[group->second];
-      const std::uint64_t record_bytes = std::uint64_t{info_group.data_bytes} + info_group.invalidation_bytes;
+      const std::size_t record_bytes = info_group.record_bytes();
       if (stream.next(record_bytes).empty()) break;  // torn at the end
       ++counted[group->second];
       at += data_group.record_id_size + record_bytes;
@@ -457,7 +462,7 @@ const std::string& RecordCursor::error() const { return state_->error; }
 std::optional<Record> RecordCursor::next() {
   State& state = *state_;
   const GroupInfo& group = state.group;
-  const std::uint64_t record_bytes = std::uint64_t{group.data_bytes} + group.invalidation_bytes;
+  const std::size_t record_bytes = group.record_bytes();
   while (state.index < group.samples) {
     if (state.data_group.record_id_size != 0) {
       const std::span<const std::uint8_t> id_bytes = state.stream.next(state.data_group.record_id_size);
@@ -468,8 +473,7 @@ std::optional<Record> RecordCursor::next() {
         // Counted on opening: every id belongs to a group of this data group, and each is read past.
         for (const std::size_t other : state.data_group.groups) {
           const GroupInfo& other_group = state.info.groups[other];
-          if (other_group.record_id == id)
-            (void)state.stream.next(std::uint64_t{other_group.data_bytes} + other_group.invalidation_bytes);
+          if (other_group.record_id == id) (void)state.stream.next(other_group.record_bytes());
         }
         continue;
       }
@@ -519,17 +523,17 @@ Result<std::optional<std::pair<double, double>>> Reader::time_span(std::size_t g
     return span;
   }
   // Sorted: the first record, and the last one found from the blocks' sizes.
-  const std::uint64_t record_bytes = std::uint64_t{info_group.data_bytes} + info_group.invalidation_bytes;
+  const std::size_t record_bytes = info_group.record_bytes();
   std::vector<std::uint8_t> bytes(record_bytes);
   const auto time_of = [&](std::uint64_t index) -> std::optional<double> {
     std::uint64_t skip = index * record_bytes;
-    std::uint64_t filled = 0;
+    std::size_t filled = 0;
     for (const DataPiece& piece : data_group.pieces) {
       if (skip >= piece.size) {
         skip -= piece.size;
         continue;
       }
-      const std::uint64_t take = std::min(piece.size - skip, record_bytes - filled);
+      const auto take = static_cast<std::size_t>(std::min<std::uint64_t>(piece.size - skip, record_bytes - filled));
       if (!state_->source->read(piece.offset + skip, bytes.data() + filled, take)) return std::nullopt;
       filled += take;
       skip = 0;

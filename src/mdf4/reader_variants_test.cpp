@@ -30,15 +30,15 @@ std::vector<double> column(const Reader& reader, std::size_t group, std::size_t 
 // MDF 4.10, texts of exact length (mdflib), MD comments, a channel group of 4.2 with its seventh link.
 TEST(Mdf4ReaderVariants, Version410WithMdCommentsAndExactTextLengths) {
   HandMadeFile file{"MDF     ", "4.10    ", 410};
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group();
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group();
   file.link(header, 0, group);
-  const std::uint64_t channel_group = file.channel_group(0, 2, 12, 0, 7);
+  const std::size_t channel_group = file.channel_group(0, 2, 12, 0, 7);
   file.link(group, 1, channel_group);
   file.link(channel_group, 2, file.tx("event 1", "##TX", false));
-  const std::uint64_t time = file.channel("t", 2, 4, 0, 64);
+  const std::size_t time = file.channel("t", 2, 4, 0, 64);
   file.link(channel_group, 1, time);
-  const std::uint64_t value = file.channel("v", 0, 4, 8, 32);
+  const std::size_t value = file.channel("v", 0, 4, 8, 32);
   file.link(time, 0, value);
   file.link(value, 6, file.tx("V", "##TX", false));
   file.link(
@@ -59,17 +59,17 @@ TEST(Mdf4ReaderVariants, Version410WithMdCommentsAndExactTextLengths) {
 // Several channel groups in one data group, each record prefixed by its group's 1-byte id (mdflib writes so).
 TEST(Mdf4ReaderVariants, UnsortedRecordsWithIds) {
   HandMadeFile file;
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group(1);
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group(1);
   file.link(header, 0, group);
-  const std::uint64_t first = file.channel_group(1, 2, 10, 0);
-  const std::uint64_t second = file.channel_group(2, 1, 9, 0);
+  const std::size_t first = file.channel_group(1, 2, 10, 0);
+  const std::size_t second = file.channel_group(2, 1, 9, 0);
   file.link(group, 1, first);
   file.link(first, 0, second);
-  const std::uint64_t first_time = file.channel("time", 2, 4, 0, 64);
+  const std::size_t first_time = file.channel("time", 2, 4, 0, 64);
   file.link(first_time, 0, file.channel("a", 0, 2, 8, 16));
   file.link(first, 1, first_time);
-  const std::uint64_t second_time = file.channel("time", 2, 4, 0, 64);
+  const std::size_t second_time = file.channel("time", 2, 4, 0, 64);
   file.link(second_time, 0, file.channel("b", 0, 0, 8, 8));
   file.link(second, 1, second_time);
   RecordBytes records;
@@ -89,15 +89,15 @@ TEST(Mdf4ReaderVariants, UnsortedRecordsWithIds) {
 // the last record torn by the crash.
 TEST(Mdf4ReaderVariants, AnUnfinalisedGrowingDataBlockIsRecovered) {
   HandMadeFile file{"UnFinMF ", "4.20    ", 420, 0x05};
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group();
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group();
   file.link(header, 0, group);
-  const std::uint64_t channel_group = file.channel_group(0, 0, 10, 0);
+  const std::size_t channel_group = file.channel_group(0, 0, 10, 0);
   file.link(group, 1, channel_group);
-  const std::uint64_t time = file.channel("time", 2, 4, 0, 64);
+  const std::size_t time = file.channel("time", 2, 4, 0, 64);
   file.link(time, 0, file.channel("n", 0, 0, 8, 16));
   file.link(channel_group, 1, time);
-  const std::uint64_t data = file.data_block({});
+  const std::size_t data = file.data_block({});
   file.link(group, 2, data);
   const auto records = RecordBytes{}.add(0.0).add(std::uint16_t{1}).add(1.0).add(std::uint16_t{2}).add(2.0).bytes;
   file.append_raw(records.data(), records.size());  // the third record lacks its value
@@ -110,22 +110,22 @@ TEST(Mdf4ReaderVariants, AnUnfinalisedGrowingDataBlockIsRecovered) {
 // A list of two data blocks with one equal length, a record split across them, under a header list.
 TEST(Mdf4ReaderVariants, ADataListUnderAHeaderListWithARecordAcrossBlocks) {
   HandMadeFile file;
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group();
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group();
   file.link(header, 0, group);
-  const std::uint64_t channel_group = file.channel_group(0, 3, 4, 0);
+  const std::size_t channel_group = file.channel_group(0, 3, 4, 0);
   file.link(group, 1, channel_group);
   file.link(channel_group, 1, file.channel("n", 0, 0, 0, 32));
   const auto records = RecordBytes{}.add(std::uint32_t{10}).add(std::uint32_t{20}).add(std::uint32_t{30}).bytes;
-  const std::uint64_t part1 = file.data_block({records.begin(), records.begin() + 6});
-  const std::uint64_t part2 = file.data_block({records.begin() + 6, records.end()});
-  const std::uint64_t list = file.block("##DL", 3, 16);
+  const std::size_t part1 = file.data_block({records.begin(), records.begin() + 6});
+  const std::size_t part2 = file.data_block({records.begin() + 6, records.end()});
+  const std::size_t list = file.block("##DL", 3, 16);
   file.link(list, 1, part1);
   file.link(list, 2, part2);
   file.put<std::uint8_t>(list + 48, 1);  // equal length
   file.put<std::uint32_t>(list + 52, 2);
   file.put<std::uint64_t>(list + 56, 6);
-  const std::uint64_t header_list = file.block("##HL", 1, 16);
+  const std::size_t header_list = file.block("##HL", 1, 16);
   file.link(header_list, 0, list);
   file.link(group, 2, header_list);
   const Reader reader = open(file);
@@ -135,23 +135,23 @@ TEST(Mdf4ReaderVariants, ADataListUnderAHeaderListWithARecordAcrossBlocks) {
 // Big-endian values, bit fields, a virtual time master scaled by a linear conversion, value-to-text.
 TEST(Mdf4ReaderVariants, BigEndianBitFieldsVirtualMasterAndTexts) {
   HandMadeFile file;
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group();
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group();
   file.link(header, 0, group);
-  const std::uint64_t channel_group = file.channel_group(0, 2, 8, 0);
+  const std::size_t channel_group = file.channel_group(0, 2, 8, 0);
   file.link(group, 1, channel_group);
-  const std::uint64_t time = file.channel("time", 3, 0, 0, 0);
-  const std::uint64_t scale = file.block("##CC", 4, 40);
+  const std::size_t time = file.channel("time", 3, 0, 0, 0);
+  const std::size_t scale = file.block("##CC", 4, 40);
   file.put<std::uint8_t>(scale + 56, 1);
   file.put<std::uint16_t>(scale + 62, 2);
   file.put<double>(scale + 80, 10.0);
   file.put<double>(scale + 88, 0.01);
   file.link(time, 4, scale);
-  const std::uint64_t big = file.channel("big", 0, 3, 0, 16);        // i16 big-endian at 0
-  const std::uint64_t field = file.channel("field", 0, 2, 2, 5, 3);  // i5 at byte 2, bit 3
-  const std::uint64_t state = file.channel("state", 0, 0, 3, 8);
-  const std::uint64_t real = file.channel("real", 0, 5, 4, 32);    // f32 big-endian at 4
-  const std::uint64_t texts = file.block("##CC", 4 + 3, 24 + 16);  // two keys, a default
+  const std::size_t big = file.channel("big", 0, 3, 0, 16);        // i16 big-endian at 0
+  const std::size_t field = file.channel("field", 0, 2, 2, 5, 3);  // i5 at byte 2, bit 3
+  const std::size_t state = file.channel("state", 0, 0, 3, 8);
+  const std::size_t real = file.channel("real", 0, 5, 4, 32);    // f32 big-endian at 4
+  const std::size_t texts = file.block("##CC", 4 + 3, 24 + 16);  // two keys, a default
   file.put<std::uint8_t>(texts + 80, 7);
   file.put<std::uint16_t>(texts + 84, 3);
   file.put<std::uint16_t>(texts + 86, 2);
@@ -185,13 +185,13 @@ TEST(Mdf4ReaderVariants, BigEndianBitFieldsVirtualMasterAndTexts) {
 // An unfinalised list whose last links the writer had not filled yet (flag 0x10): the filled ones are read.
 TEST(Mdf4ReaderVariants, AnUnfinishedDataListEndsAtItsFirstNilLink) {
   HandMadeFile file{"UnFinMF ", "4.20    ", 420, 0x11};
-  const std::uint64_t header = file.header();
-  const std::uint64_t group = file.data_group();
+  const std::size_t header = file.header();
+  const std::size_t group = file.data_group();
   file.link(header, 0, group);
-  const std::uint64_t channel_group = file.channel_group(0, 0, 1, 0);
+  const std::size_t channel_group = file.channel_group(0, 0, 1, 0);
   file.link(group, 1, channel_group);
   file.link(channel_group, 1, file.channel("n", 0, 0, 0, 8));
-  const std::uint64_t list = file.block("##DL", 4, 8 + 24);
+  const std::size_t list = file.block("##DL", 4, 8 + 24);
   file.put<std::uint32_t>(list + 24 + 32 + 4, 3);
   file.link(list, 1, file.data_block({1, 2}));
   file.link(group, 2, list);

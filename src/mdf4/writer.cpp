@@ -90,14 +90,14 @@ struct Writer::State {
     return Failure{failure};
   }
 
-  Status write_at(std::uint64_t offset, const std::uint8_t* bytes, std::uint64_t size) {
+  Status write_at(std::uint64_t offset, const std::uint8_t* bytes, std::size_t size) {
     while (size > 0) {
       const ssize_t written = ::pwrite(file, bytes, size, static_cast<off_t>(offset));
       if (written < 0 && errno == EINTR) continue;
       if (written <= 0) return fail("write");
       bytes += written;
       offset += static_cast<std::uint64_t>(written);
-      size -= static_cast<std::uint64_t>(written);
+      size -= static_cast<std::size_t>(written);
     }
     return done();
   }

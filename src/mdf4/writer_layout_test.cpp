@@ -43,7 +43,7 @@ class WrittenFile {
     const auto length = at<std::uint64_t>(offset + 8);
     expect_block(offset, id, length, 0);
     EXPECT_EQ(length % 8, 0u);
-    const std::string content = text(offset + 24, length - 24);
+    const std::string content = text(offset + 24, static_cast<std::size_t>(length - 24));
     const std::size_t end = content.find('\0');
     EXPECT_NE(end, std::string::npos);
     EXPECT_EQ(content.find_first_not_of('\0', end), std::string::npos);

@@ -54,6 +54,9 @@ struct GroupInfo {
   std::uint32_t data_bytes = 0, invalidation_bytes = 0;
   std::uint64_t record_id = 0;     // in an unsorted data group
   std::uint64_t block_offset = 0;  // the CG block
+
+  // A record's bytes (the reader refuses groups whose records are implausibly long, so this fits in memory).
+  [[nodiscard]] std::size_t record_bytes() const { return std::size_t{data_bytes} + invalidation_bytes; }
 };
 
 struct FileInfo {
