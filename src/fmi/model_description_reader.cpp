@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -177,9 +178,11 @@ class DescriptionReader {
     const std::string_view text = found.value();
     Number value{};
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (error != std::errc{} || end != text.data() + text.size() || text.empty())
+    bool finite = true;
+    if constexpr (std::is_floating_point_v<Number>) finite = std::isfinite(value);
+    if (error != std::errc{} || end != text.data() + text.size() || text.empty() || !finite)
       refuse(node, std::string{attribute} + " \"" + std::string{text} + "\" is not " +
-                       (std::is_floating_point_v<Number> ? "a number" : "an unsigned integer"));
+                       (std::is_floating_point_v<Number> ? "a finite number" : "an unsigned integer"));
     return value;
   }
 
