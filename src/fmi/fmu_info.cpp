@@ -89,9 +89,9 @@ void write_text(std::ostream& out, const FmuInfo& info) {
       widths[column] = std::max(widths[column], row[column].size());
   out << "variables (" << description.variables.size() << "):\n";
   for (const auto& row : rows) {
-    std::string line = " ";
+    std::string line;
     for (std::size_t column = 0; column < row.size(); ++column)
-      line += " " + row[column] + std::string(widths[column] - row[column].size(), ' ');
+      line += "  " + row[column] + std::string(widths[column] - row[column].size(), ' ');
     while (!line.empty() && line.back() == ' ') line.pop_back();
     out << line << '\n';
   }
