@@ -15,6 +15,8 @@ packages=(
   qemu-system-arm qemu-user-static
   # host libraries
   libasio-dev libboost-dev libcli11-dev nlohmann-json3-dev libyaml-cpp-dev libfmt-dev libspdlog-dev libeigen3-dev
+  # FMI: FMU archives are zip files (libzip), their modelDescription.xml is read and written with pugixml
+  libzip-dev libpugixml-dev
   # tests, benchmarks and code checks
   googletest libgtest-dev libgmock-dev libbenchmark-dev clang-format clang-tidy
   # the bridge's benchmark compares with socat

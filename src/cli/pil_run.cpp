@@ -15,6 +15,7 @@
 
 #include "child_process.hpp"
 #include "duet/link/named_pipes.hpp"
+#include "duet/support/temporary_folder.hpp"
 #include "firmware_console.hpp"
 #include "machine_load.hpp"
 #include "pil_programs.hpp"
@@ -22,7 +23,6 @@
 #include "plant_control_endpoint.hpp"
 #include "plant_session.hpp"
 #include "stop_signals.hpp"
-#include "temporary_folder.hpp"
 
 namespace duet::cli {
 namespace {

@@ -1,4 +1,4 @@
-#include "temporary_folder.hpp"
+#include "duet/support/temporary_folder.hpp"
 
 #include <stdlib.h>
 
@@ -7,7 +7,7 @@
 #include <string>
 #include <system_error>
 
-namespace duet::cli {
+namespace duet {
 
 Result<TemporaryFolder> TemporaryFolder::make(std::string_view prefix) {
   std::error_code error;
@@ -25,4 +25,4 @@ TemporaryFolder::~TemporaryFolder() {
   std::filesystem::remove_all(path_, ignored);
 }
 
-}  // namespace duet::cli
+}  // namespace duet

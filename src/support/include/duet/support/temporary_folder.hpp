@@ -4,10 +4,11 @@
 
 #include <filesystem>
 #include <string_view>
+#include <utility>
 
 #include "duet/support/result.hpp"
 
-namespace duet::cli {
+namespace duet {
 
 class TemporaryFolder {
  public:
@@ -26,4 +27,4 @@ class TemporaryFolder {
   std::filesystem::path path_;
 };
 
-}  // namespace duet::cli
+}  // namespace duet
