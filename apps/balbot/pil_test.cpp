@@ -9,11 +9,14 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <iomanip>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "child_program.hpp"
+#include "duet/mdf4/reader.hpp"
 #include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
 #include "recorded_daq_step.hpp"
@@ -139,6 +142,90 @@ TEST(BalbotPil, DaqTimestampsOfTheMillisecondTaskAdvanceByItsPeriod) {
   ASSERT_NE(url, std::string::npos) << xcp;
   const double step = recorded_daq_step(DUET_BALBOT_A2L, xcp.substr(url, xcp.find(' ', url) - url));
   EXPECT_NEAR(step, 1e-3, 1e-7);
+}
+
+// The lines of `text` after the header, split by which of the recording's events they are a sample of: a CSV of
+// `duet xcp record` on several events leaves the other events' fields empty. `first_columns` is the number of
+// columns of the first event.
+std::vector<std::vector<std::string>> csv_rows_by_event(const std::string& text, std::size_t first_columns) {
+  std::vector<std::vector<std::string>> rows(2);
+  std::size_t start = text.find('\n') + 1;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    const std::string line = text.substr(start, end - start);
+    start = end + 1;
+    const std::size_t after_time = line.find(',');
+    rows[line.compare(after_time, first_columns + 1, std::string(first_columns + 1, ',')) == 0 ? 1 : 0].push_back(line);
+  }
+  return rows;
+}
+
+// The acceptance of `duet xcp record --mdf`: one recording of the firmware on QEMU, written as CSV and as MDF at
+// once, two events (rate 1 and rate 10) with floats, booleans, a verbal state and a 32-bit counter. Every sample of
+// the MDF file, its physical values printed as the CSV prints them, is the CSV's line for that sample.
+TEST(BalbotPil, XcpRecordWritesToMdfTheValuesItWritesToCsv) {
+  if (!std::filesystem::exists(BALBOT_PIL_FIRMWARE)) GTEST_SKIP() << "no firmware image " << BALBOT_PIL_FIRMWARE;
+  Program pil{DUET_PROGRAM,
+              {"pil", BALBOT_PIL_FIRMWARE, "--scenario", DUET_BALBOT_SCENARIO, "--lock-step", "--xcp", "127.0.0.1:0",
+               "--websocket", "127.0.0.1:0"},
+              "pil_mdf"};
+  ASSERT_TRUE(pil.started());
+  (void)pil.line();
+  const std::string xcp = pil.line();
+  const std::size_t url = xcp.find("tcp://");
+  ASSERT_NE(url, std::string::npos) << xcp;
+  const TemporaryFile csv{"record.csv"};
+  const TemporaryFile mdf{"record.mf4"};
+  const std::vector<std::string> fast{"theta", "stop", "robot_state", "requests_sent"};
+  Program recorder{DUET_PROGRAM,
+                   {"xcp",        "record",
+                    "--a2l",      DUET_BALBOT_A2L,
+                    "--connect",  xcp.substr(url, xcp.find(' ', url) - url),
+                    "--signal",   "theta",
+                    "--signal",   "stop",
+                    "--signal",   "robot_state",
+                    "--signal",   "requests_sent",
+                    "--signal",   "y@rate 10",
+                    "--signal",   "gains_from@rate 10",
+                    "--event",    "rate 1",
+                    "--duration", "10",
+                    "--timeout",  "10000",
+                    "--output",   csv.path(),
+                    "--mdf",      mdf.path()},
+                   "record_mdf"};
+  ASSERT_EQ(recorder.wait(), 0) << recorder.errors();
+  auto text = read_text_file(csv.path());
+  ASSERT_TRUE(text.ok());
+  const std::vector<std::vector<std::string>> rows = csv_rows_by_event(text.value(), fast.size());
+  auto reader = mdf4::Reader::open(mdf.path());
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  const mdf4::FileInfo& info = reader.value().info();
+  ASSERT_EQ(info.groups.size(), 2U);
+  EXPECT_EQ(info.groups[0].name, "rate 1");
+  EXPECT_EQ(info.groups[1].name, "rate 10");
+  EXPECT_EQ(info.groups[0].channels[2].bit_count, 8U);   // stop, UBYTE
+  EXPECT_EQ(info.groups[0].channels[4].bit_count, 32U);  // requests_sent, ULONG
+  for (std::size_t group = 0; group < 2; ++group) {
+    std::size_t sample = 0;
+    const Status read = reader.value().for_each_record(group, [&](const mdf4::Record& record) {
+      std::ostringstream line;
+      line << std::setprecision(9) << record.time();
+      if (group == 1) line << std::string(fast.size(), ',');
+      for (std::size_t channel = 1; channel < info.groups[group].channels.size(); ++channel) {
+        const mdf4::Physical physical = record.physical(channel);
+        line << ',' << std::setprecision(10)
+             << (std::holds_alternative<double>(physical) ? std::get<double>(physical)
+                                                          : mdf4::to_double(std::get<mdf4::Number>(physical)));
+      }
+      if (group == 0) line << ",,";
+      ASSERT_LT(sample, rows[group].size());
+      EXPECT_EQ(line.str(), rows[group][sample]) << "group " << group << ", sample " << sample;
+      ++sample;
+    });
+    ASSERT_TRUE(read.ok()) << read.error();
+    EXPECT_EQ(sample, rows[group].size());
+    EXPECT_GT(sample, group == 0 ? 500U : 50U);
+  }
 }
 
 }  // namespace

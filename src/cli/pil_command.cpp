@@ -107,6 +107,7 @@ Action define_pil_command(CLI::App& command) {
   command.add_option("--csv", options->recording.csv, "Write the plant's own quantities, a row per tick, to FILE")
       ->type_name("FILE");
   command.add_option("--plot", options->recording.plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
+  command.add_option("--mdf", options->recording.mdf, "The same as an MDF 4 file of one group")->type_name("FILE");
   command.add_option("--console", options->console, "Write every line of the firmware's console to FILE")
       ->type_name("FILE");
   command.get_option("--bridge")->excludes("--no-bridge");

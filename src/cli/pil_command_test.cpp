@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "child_process.hpp"
+#include "duet/mdf4/reader.hpp"
 #include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
@@ -75,7 +76,7 @@ TEST(PilCommand, APlantThatCannotBeMadeOrFilesThatCannotBeWritten) {
   EXPECT_EQ(missing_scenario.exit_code, ExitCode::failure);
   EXPECT_TRUE(contains(missing_scenario.err, "/nonexistent/robot.yaml")) << missing_scenario.err;
 
-  for (const char* option : {"--csv", "--plot", "--console"}) {
+  for (const char* option : {"--csv", "--plot", "--mdf", "--console"}) {
     const Outcome unwritable = run({"pil", firmware.path(), option, "/nonexistent/file"});
     EXPECT_EQ(unwritable.exit_code, ExitCode::failure);
     EXPECT_EQ(unwritable.err, "duet pil: cannot write /nonexistent/file\n") << option;
@@ -109,11 +110,12 @@ std::filesystem::path run_folder(const std::string& out) {
 TEST(PilCommand, ALockStepRunThatEndsByItself) {
   const TemporaryFile firmware{"image.elf", ""};
   const TemporaryFile csv{"plant.csv", ""};
+  const TemporaryFile mdf{"plant.mf4", ""};
   const TemporaryFile console{"console.txt", ""};
   const TemporaryFile scenario{"robot.yaml", "initial_tilt_deg: 2\nrelease_time_s: 0.2\nnoise: false\n"};
   const Outcome outcome =
       run({"pil", firmware.path(), "--qemu", DUET_FAKE_QEMU, "--no-bridge", "--lock-step", "--duration", "0.5",
-           "--scenario", scenario.path(), "--csv", csv.path(), "--console", console.path()});
+           "--scenario", scenario.path(), "--csv", csv.path(), "--mdf", mdf.path(), "--console", console.path()});
   EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
   EXPECT_EQ(outcome.err, "");
   EXPECT_TRUE(contains(outcome.out, ", plant balbot, lock-step\n")) << outcome.out;
@@ -137,6 +139,25 @@ TEST(PilCommand, ALockStepRunThatEndsByItself) {
   ASSERT_TRUE(recorded.ok()) << recorded.error();
   ASSERT_EQ(recorded.value().time.size(), 500U);  // a row per tick
   EXPECT_EQ(recorded.value().time.back(), 0.5);
+  // The MDF file: one group of the same quantities, as doubles, the same values.
+  auto reader = mdf4::Reader::open(mdf.path());
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  ASSERT_EQ(reader.value().info().groups.size(), 1U);
+  const mdf4::GroupInfo& group = reader.value().info().groups[0];
+  EXPECT_EQ(group.name, "every tick");
+  EXPECT_EQ(group.samples, 500U);
+  ASSERT_EQ(group.channels.size(), recorded.value().series.size() + 1);
+  std::size_t row = 0;
+  const Status read = reader.value().for_each_record(0, [&](const mdf4::Record& record) {
+    EXPECT_EQ(record.time(), recorded.value().time[row]);
+    for (std::size_t column = 0; column < recorded.value().series.size(); ++column) {
+      EXPECT_EQ(group.channels[column + 1].name, recorded.value().series[column].name);
+      EXPECT_EQ(group.channels[column + 1].bit_count, 64U);
+      EXPECT_EQ(mdf4::to_double(record.value(column + 1)), recorded.value().series[column].values[row]);
+    }
+    ++row;
+  });
+  EXPECT_TRUE(read.ok()) << read.error();
   auto lines = read_text_file(console.path());
   ASSERT_TRUE(lines.ok());
   EXPECT_TRUE(lines.value().starts_with("fake-qemu pid=")) << lines.value();

@@ -90,8 +90,7 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
       streams.err << prefix << accepted.error() << '\n';
       return ExitCode::failure;
     }
-    RecordingPlant plant{control.value().controlled(chosen.value().make()),
-                         !options.recording.csv.empty() || !options.recording.plot.empty()};
+    RecordingPlant plant{control.value().controlled(chosen.value().make()), options.recording.any()};
     auto served = link::serve(plant, *accepted.value().stream);
     if (served) {
       streams.out << "served " << accepted.value().peer << ": " << describe(served.value()) << std::endl;
@@ -131,6 +130,7 @@ Action define_plant_command(CLI::App& command) {
                    "Write the plant's own quantities, a row per TICK, to FILE when a session ends (the last session's)")
       ->type_name("FILE");
   serve->add_option("--plot", options->recording.plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
+  serve->add_option("--mdf", options->recording.mdf, "The same as an MDF 4 file")->type_name("FILE");
   serve
       ->add_option("--plant-control", options->plant_control,
                    "HOST:PORT on this machine where the plant takes disturbances (push, restart) while a firmware "

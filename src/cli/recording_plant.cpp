@@ -1,7 +1,9 @@
 #include "recording_plant.hpp"
 
+#include <chrono>
 #include <fstream>
 
+#include "duet/mdf4_recording/recording_file.hpp"
 #include "duet/plot/figure.hpp"
 
 namespace duet::cli {
@@ -40,7 +42,7 @@ Status write_text_file(const std::string& path, const std::string& text) {
 }
 
 Status create_recording_files(const RecordingFiles& files) {
-  for (const std::string& path : {files.csv, files.plot}) {
+  for (const std::string& path : {files.csv, files.plot, files.mdf}) {
     if (path.empty()) continue;
     if (Status created = write_text_file(path, ""); !created) return created;
   }
@@ -48,7 +50,7 @@ Status create_recording_files(const RecordingFiles& files) {
 }
 
 Status write_recording_files(const model::Recording& recording, const RecordingFiles& files, const std::string& title) {
-  std::string problems;  // both files are tried whatever happens to the first
+  std::string problems;  // every file is tried whatever happens to the others
   const auto attempt = [&problems](const std::string& path, const std::string& text) {
     if (Status written = write_text_file(path, text); !written)
       problems += (problems.empty() ? "" : "; ") + written.error();
@@ -59,6 +61,16 @@ Status write_recording_files(const model::Recording& recording, const RecordingF
     for (std::size_t k = 0; k < recording.names.size(); ++k)
       figure.series.push_back({recording.names[k], recording.units[k], recording.columns[k]});
     attempt(files.plot, plot::to_svg(figure));
+  }
+  if (!files.mdf.empty()) {
+    const auto now = std::chrono::system_clock::now().time_since_epoch();
+    const Status written = mdf4_recording::write_recording_file(
+        files.mdf, recording,
+        {.group = "every tick",
+         .comment = title,
+         .start_time_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(),
+         .program = nullptr});
+    if (!written) problems += (problems.empty() ? "" : "; ") + written.error();
   }
   if (!problems.empty()) return Failure{problems};
   return done();

@@ -1,7 +1,7 @@
 #pragma once
 // The plant's own view of a session: a plant that records what the plant behind it shows of itself
 // (Plant::observables) once per TICK, after it advanced, whatever the firmware measures; and the files that
-// recording is written to (--csv, --plot of `duet plant serve` and `duet pil`).
+// recording is written to (--csv, --plot, --mdf of `duet plant serve` and `duet pil`).
 
 #include <cstddef>
 #include <memory>
@@ -47,6 +47,8 @@ class RecordingPlant : public plant::Plant {
 struct RecordingFiles {
   std::string csv;   // like duet sim's: time_s and a column per quantity, numbers that read back as the same doubles
   std::string plot;  // an SVG plot with a panel per unit
+  std::string mdf;   // an MDF 4 file of one group, the quantities as doubles (docs/MDF4.md)
+  [[nodiscard]] bool any() const { return !csv.empty() || !plot.empty() || !mdf.empty(); }
 };
 
 // Creates the files, empty, so that a path that cannot be written fails before a session rather than after it.

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <fstream>
 #include <memory>
 #include <ostream>
@@ -11,6 +12,8 @@
 #include <vector>
 
 #include "checked_model.hpp"
+#include "duet/mdf4_recording/recording_file.hpp"
+#include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
@@ -28,6 +31,7 @@ struct SimOptions {
   std::vector<std::string> signals;
   std::string csv;
   std::string plot;
+  std::string mdf;
   bool no_plot = false;
   std::uint64_t seed = 1;
   bool seed_given = false;
@@ -115,11 +119,27 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
   }
   const model::Recording& recording = simulated.value().recording;
   const std::string name = checked->model->name;
-  const std::string csv = options.csv.empty() ? name + ".csv" : options.csv;
-  if (!write_file(csv, model::to_csv(recording), streams)) return ExitCode::failure;
+  // With --mdf and no --csv, the MDF file is the recording.
+  const std::string csv = !options.csv.empty() ? options.csv : options.mdf.empty() ? name + ".csv" : std::string{};
+  if (!csv.empty() && !write_file(csv, model::to_csv(recording), streams)) return ExitCode::failure;
+  if (!options.mdf.empty()) {
+    const auto now = std::chrono::system_clock::now().time_since_epoch();
+    const std::string group = "base period " + model::format_number(checked->model->base_period_us) + " us";
+    const Status written = mdf4_recording::write_recording_file(
+        options.mdf, recording,
+        {.group = group,
+         .comment = "duet sim " + options.file + " against plant '" + options.plant + "'",
+         .start_time_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(),
+         .program = &checked->program});
+    if (!written) {
+      streams.err << "duet sim: " << written.error() << '\n';
+      return ExitCode::failure;
+    }
+  }
   streams.out << "simulated " << name << " for " << options.duration_s << " s (" << simulated.value().ticks
-              << " base ticks) against plant '" << options.plant << "'; wrote " << csv << " (" << recording.names.size()
-              << " columns)";
+              << " base ticks) against plant '" << options.plant << "'; wrote "
+              << (csv.empty() || options.mdf.empty() ? csv + options.mdf : csv + " and " + options.mdf) << " ("
+              << recording.names.size() << " columns)";
   if (!options.no_plot) {
     plot::Figure figure{name + " against plant '" + options.plant + "'", "s", recording.time_s, {}};
     for (std::size_t k = 0; k < recording.names.size(); ++k) {
@@ -154,7 +174,8 @@ Action define_sim_command(CLI::App& command) {
       ->check(CLI::Range(0.0, 1e6));
   command.add_option("-s,--signal", options->signals,
                      "A signal to record (repeat for more); default: the measurable signals, or all");
-  command.add_option("--csv", options->csv, "The CSV file to write (default: the model's name .csv)");
+  command.add_option("--csv", options->csv, "The CSV file to write (default: the model's name .csv, unless --mdf)");
+  command.add_option("--mdf", options->mdf, "Also (or instead of CSV) an MDF 4 file, the signals in their types");
   command.add_option("--plot", options->plot, "The SVG plot to write (default: the model's name .svg)");
   command.add_flag("--no-plot", options->no_plot, "Write no plot");
   auto* seed = command.add_option("--seed", options->seed, "Seed of the plant's noise: the same seed, the same run")

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "duet/mdf4/reader.hpp"
+#include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
 
@@ -33,6 +35,49 @@ TEST_F(SimGen, SimWritesTheCsvAndThePlot) {
             "time_s,level\n0,1\n9.999999999999999e-05,0\n0.00019999999999999998,1\n3e-04,0\n"
             "0.00039999999999999996,1\n5e-04,0\n");
   EXPECT_NE(read_text_file(in_folder("s.svg")).value().find("<svg"), std::string::npos);
+}
+
+// --mdf: the signals in their model types (a single f32, a boolean and a uint8 u8, a uint32 u32) with their units
+// and descriptions, the plant's quantities as doubles, the same values as the CSV.
+TEST_F(SimGen, SimWritesAnMdfFileOfTheSignalsInTheirTypes) {
+  const Outcome outcome = run({"sim", examples + "balbot/balbot.yaml", "--plant", "balbot", "--duration", "0.01", "-s",
+                               "theta", "-s", "stop", "-s", "robot_state", "-s", "requests_sent", "--csv",
+                               in_folder("b.csv"), "--mdf", in_folder("b.mf4"), "--no-plot"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_NE(outcome.out.find("wrote " + in_folder("b.csv") + " and " + in_folder("b.mf4")), std::string::npos)
+      << outcome.out;
+  auto reader = mdf4::Reader::open(in_folder("b.mf4"));
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  ASSERT_EQ(reader.value().info().groups.size(), 1U);
+  const mdf4::GroupInfo& group = reader.value().info().groups[0];
+  EXPECT_EQ(group.name, "base period 1000 us");
+  ASSERT_GT(group.channels.size(), 5U);
+  const std::vector<std::string> names{"time", "theta", "stop", "robot_state", "requests_sent"};
+  const std::vector<std::uint32_t> bits{64, 32, 8, 8, 32};
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    EXPECT_EQ(group.channels[k].name, names[k]);
+    EXPECT_EQ(group.channels[k].bit_count, bits[k]) << names[k];
+  }
+  EXPECT_EQ(group.channels[1].unit, "deg");
+  EXPECT_EQ(group.channels[1].comment, "tilt, Kalman-filtered (theta filtered)");
+  EXPECT_EQ(group.channels[1].data_type, 4);  // float
+  EXPECT_TRUE(group.channels[5].name.starts_with("plant.")) << group.channels[5].name;
+  EXPECT_EQ(group.channels[5].bit_count, 64U);
+  // Every value as the CSV has it (the CSV writes numbers that read back as the same doubles).
+  auto csv = plot::read_csv(read_text_file(in_folder("b.csv")).value(), "b.csv");
+  ASSERT_TRUE(csv.ok()) << csv.error();
+  std::size_t row = 0;
+  const Status read = reader.value().for_each_record(0, [&](const mdf4::Record& record) {
+    ASSERT_LT(row, csv.value().time.size());
+    EXPECT_EQ(record.time(), csv.value().time[row]);
+    for (std::size_t column = 0; column < csv.value().series.size(); ++column) {
+      EXPECT_EQ(mdf4::to_double(record.value(column + 1)), csv.value().series[column].values[row])
+          << csv.value().series[column].name << " at row " << row;
+    }
+    ++row;
+  });
+  ASSERT_TRUE(read.ok()) << read.error();
+  EXPECT_EQ(row, 11U);
 }
 
 TEST_F(SimGen, SimAgainstAPlantThatIsAModel) {

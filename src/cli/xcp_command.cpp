@@ -248,13 +248,17 @@ Action define_xcp_command(CLI::App& command) {
   CLI::App* write = command.add_subcommand("write", "Write parameters: NAME=VALUE (physical value, within its limits)");
   add_connection(write);
   write->add_option("assignments", options->targets, "NAME=VALUE ...")->required();
-  CLI::App* record = command.add_subcommand("record", "Record signals with DAQ to CSV");
+  CLI::App* record = command.add_subcommand("record", "Record signals with DAQ to CSV and MDF 4");
   add_connection(record);
-  record->add_option("--signal", options->signals, "A signal to record (repeat for more)")->required();
-  record->add_option("--event", options->event, "The event (name or number) that samples them")->required();
+  record
+      ->add_option("--signal", options->signals,
+                   "A signal to record, NAME or NAME@EVENT (repeat for more; a list and a group per event)")
+      ->required();
+  record->add_option("--event", options->event, "The event (name or number) that samples signals without @EVENT");
   record->add_option("--duration", options->duration_s, "Seconds to record")->check(CLI::PositiveNumber);
-  record->add_option("--output", options->output, "The CSV file (default: standard output)");
+  record->add_option("--output", options->output, "The CSV file (default: standard output, unless --mdf is given)");
   record->add_option("--plot", options->plot, "Also an SVG plot of the recording, a panel per unit");
+  record->add_option("--mdf", options->mdf, "Also an MDF 4 file: a group per event, the signals in their A2L types");
   record->add_flag("--event-time", options->event_time,
                    "Time each sample by its number and the event's period in the A2L, not by the DAQ timestamp");
   record->add_option("--write-at", options->timed_writes,

@@ -2,13 +2,16 @@
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+#include <signal.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
+#include "duet/mdf4/reader.hpp"
 #include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
@@ -19,6 +22,29 @@ namespace duet::cli {
 namespace {
 
 using namespace duet::xcp::host;
+
+// The target's model, a step every 0.5 ms (the 1 ms event each step, the 10 ms event every second) until stopped.
+class SteppingModel {
+ public:
+  explicit SteppingModel(TestTarget& target)
+      : thread_{[this, &target] {
+          for (std::uint32_t number = 1; running_; ++number) {
+            target.step(number);
+            std::this_thread::sleep_for(std::chrono::microseconds{500});
+          }
+        }} {}
+  SteppingModel(const SteppingModel&) = delete;
+  SteppingModel& operator=(const SteppingModel&) = delete;
+  ~SteppingModel() { stop(); }
+  void stop() {
+    running_ = false;
+    if (thread_.joinable()) thread_.join();
+  }
+
+ private:
+  std::atomic<bool> running_{true};
+  std::thread thread_;
+};
 
 class XcpCommand : public ::testing::Test {
  protected:
@@ -106,18 +132,11 @@ TEST_F(XcpCommand, WritesAndReadsByNameWithinLimits) {
 }
 
 TEST_F(XcpCommand, RecordsSignalsToCsv) {
-  std::atomic<bool> stepping{true};
-  std::thread model{[&] {
-    for (std::uint32_t number = 1; stepping; ++number) {
-      target.step(number);
-      std::this_thread::sleep_for(std::chrono::microseconds{500});
-    }
-  }};
+  SteppingModel model{target};
   const std::string csv_file = a2l_file + ".csv";
   const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--signal", "twice",
                                 "--event", "1 ms", "--duration", "0.3", "--output", csv_file});
-  stepping = false;
-  model.join();
+  model.stop();
   ASSERT_EQ(recorded.exit_code, ExitCode::success) << recorded.err;
   std::ifstream csv{csv_file};
   std::string header;
@@ -141,23 +160,113 @@ TEST_F(XcpCommand, RecordsSignalsToCsv) {
   EXPECT_FALSE(target.slave.connected());  // the command disconnected when done
 }
 
+// --mdf beside --output: a group per event (signals on "1 ms" by --event, `slow` by NAME@EVENT on "10 ms"), each
+// signal in its A2L type with its unit, description and conversion, the same samples and times as the CSV.
+TEST_F(XcpCommand, RecordsSeveralEventsToMdfAndCsv) {
+  SteppingModel model{target};
+  const std::string csv_file = a2l_file + ".csv";
+  const std::string mdf_file = a2l_file + ".mf4";
+  const Outcome recorded =
+      run({"xcp",        "record", "--a2l",    a2l_file, "--signal", "counter", "--signal", "slow@10 ms",
+           "--signal",   "twice",  "--signal", "scaled", "--signal", "flags",   "--event",  "1 ms",
+           "--duration", "0.3",    "--output", csv_file, "--mdf",    mdf_file});
+  model.stop();
+  ASSERT_EQ(recorded.exit_code, ExitCode::success) << recorded.err;
+  EXPECT_NE(recorded.err.find(" samples of 4 signals on event '1 ms', "), std::string::npos) << recorded.err;
+  EXPECT_NE(recorded.err.find(" samples of 1 signals on event '10 ms' (0 overloads"), std::string::npos)
+      << recorded.err;
+  auto reader = mdf4::Reader::open(mdf_file);
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  const mdf4::FileInfo& info = reader.value().info();
+  EXPECT_TRUE(info.finalised);
+  ASSERT_EQ(info.groups.size(), 2U);
+  EXPECT_EQ(info.groups[0].name, "1 ms");
+  EXPECT_EQ(info.groups[1].name, "10 ms");
+  const auto& fast = info.groups[0].channels;
+  ASSERT_EQ(fast.size(), 6U);  // time, counter, twice, scaled, flags[0], flags[1]
+  EXPECT_EQ(fast[1].name, "counter");
+  EXPECT_EQ(fast[1].comment, "step number");
+  EXPECT_EQ(fast[1].bit_count, 32U);
+  EXPECT_EQ(fast[2].bit_count, 16U);
+  EXPECT_EQ(fast[3].unit, "V");
+  EXPECT_EQ(fast[3].conversion.kind, mdf4::Conversion::Kind::linear);
+  EXPECT_EQ(fast[3].conversion.factor, 0.01);
+  EXPECT_EQ(fast[4].name, "flags[0]");
+  EXPECT_EQ(fast[4].comment, "two bytes (raw values, named by the A2L: 0 clear, 1 set)");
+  EXPECT_EQ(info.groups[1].channels[1].name, "slow");
+  EXPECT_EQ(info.groups[1].channels[1].bit_count, 8U);
+
+  // The CSV: a row per sample of either event, the other event's fields empty; the MDF's groups in the same order.
+  auto csv = plot::read_csv(read_text_file(csv_file).value(), csv_file);
+  ASSERT_TRUE(csv.ok()) << csv.error();
+  ASSERT_EQ(csv.value().series.size(), 6U);
+  EXPECT_EQ(csv.value().series[4].name, "flags[1]");
+  EXPECT_EQ(csv.value().series[5].name, "slow");
+  std::vector<std::vector<std::size_t>> rows(2);
+  for (std::size_t row = 0; row < csv.value().time.size(); ++row)
+    rows[std::isnan(csv.value().series[0].values[row]) ? 1 : 0].push_back(row);
+  for (std::size_t group = 0; group < 2; ++group) {
+    std::size_t sample = 0;
+    const Status read = reader.value().for_each_record(group, [&](const mdf4::Record& record) {
+      ASSERT_LT(sample, rows[group].size());
+      const std::size_t row = rows[group][sample++];
+      EXPECT_NEAR(record.time(), csv.value().time[row], 1e-9);
+      const std::size_t first = group == 0 ? 0 : 5;
+      for (std::size_t channel = 1; channel < info.groups[group].channels.size(); ++channel) {
+        const mdf4::Physical physical = record.physical(channel);
+        const double value = std::holds_alternative<double>(physical)
+                                 ? std::get<double>(physical)
+                                 : mdf4::to_double(std::get<mdf4::Number>(physical));
+        EXPECT_EQ(value, csv.value().series[first + channel - 1].values[row]) << "row " << row;
+      }
+    });
+    ASSERT_TRUE(read.ok()) << read.error();
+    EXPECT_EQ(sample, rows[group].size());
+    EXPECT_GT(sample, group == 0 ? 50U : 10U);
+  }
+  std::filesystem::remove(csv_file);
+  std::filesystem::remove(mdf_file);
+}
+
+// Ctrl-C (SIGINT) ends a recording early as a user wants it ended: the MDF file finalised with what came.
+TEST_F(XcpCommand, RecordingStoppedBySigintLeavesAFinalisedMdfFile) {
+  const std::string mdf_file = a2l_file + ".stopped.mf4";
+  SteppingModel model{target};
+  std::thread interrupt{[&] {
+    // The flush after the first second shows the recording (and so its signal handler) running.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds{20};
+    while (std::chrono::steady_clock::now() < deadline &&
+           (!std::filesystem::exists(mdf_file) || std::filesystem::file_size(mdf_file) < 4096)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds{20});
+    }
+    ::kill(::getpid(), SIGINT);
+  }};
+  const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms",
+                                "--duration", "60", "--mdf", mdf_file});
+  interrupt.join();
+  model.stop();
+  EXPECT_EQ(recorded.exit_code, ExitCode::success) << recorded.err;
+  EXPECT_NE(recorded.err.find("duet xcp: stopped by a signal; the files hold what came until then\n"),
+            std::string::npos)
+      << recorded.err;
+  EXPECT_EQ(recorded.out, "");  // with --mdf and no --output, no CSV
+  auto reader = mdf4::Reader::open(mdf_file);
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  EXPECT_TRUE(reader.value().info().finalised);
+  EXPECT_GT(reader.value().info().groups[0].samples, 500U);
+  std::filesystem::remove(mdf_file);
+}
+
 // One session records and tunes: the bridge, like XCP, serves one master, so a second `duet xcp write` would be
 // refused while the recording runs.
 TEST_F(XcpCommand, RecordsWhileWritingATimedParameterAndPlots) {
-  std::atomic<bool> stepping{true};
-  std::thread model{[&] {
-    for (std::uint32_t number = 1; stepping; ++number) {
-      target.step(number);
-      std::this_thread::sleep_for(std::chrono::microseconds{500});
-    }
-  }};
+  SteppingModel model{target};
   const std::string csv_file = a2l_file + ".csv";
   const std::string svg_file = a2l_file + ".svg";
   const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--signal", "gain",
                                 "--event", "1 ms", "--duration", "0.4", "--write-at", "0.2:gain=2.5", "--event-time",
                                 "--output", csv_file, "--plot", svg_file});
-  stepping = false;
-  model.join();
+  model.stop();
   ASSERT_EQ(recorded.exit_code, ExitCode::success) << recorded.err;
   EXPECT_NE(recorded.err.find("wrote gain=2.5 after 0.2"), std::string::npos) << recorded.err;
   EXPECT_EQ(target.parameters[3], 0x40);  // 2.5f is 0x40200000, little-endian
@@ -206,17 +315,10 @@ TEST_F(XcpCommand, ChecksumAndPages) {
 
 // A CSV that cannot be written (here: a full device) ends the recording with an error, not with samples lost quietly.
 TEST_F(XcpCommand, RecordFailsWhenItsCsvCannotBeWritten) {
-  std::atomic<bool> stepping{true};
-  std::thread model{[&] {
-    for (std::uint32_t number = 1; stepping; ++number) {
-      target.step(number);
-      std::this_thread::sleep_for(std::chrono::microseconds{500});
-    }
-  }};
+  SteppingModel model{target};
   const Outcome recorded = run({"xcp", "record", "--a2l", a2l_file, "--signal", "counter", "--event", "1 ms",
                                 "--duration", "0.2", "--output", "/dev/full"});
-  stepping = false;
-  model.join();
+  model.stop();
   EXPECT_EQ(recorded.exit_code, ExitCode::failure);
   EXPECT_NE(recorded.err.find("duet xcp: /dev/full: writing the samples failed after "), std::string::npos)
       << recorded.err;

@@ -52,6 +52,7 @@ Result<Session> open_session(const XcpOptions& options, bool needs_master, std::
   auto channel = MasterChannel::open(endpoint, timeout);
   if (!channel) return Failure{channel.error()};
   session.master = std::make_unique<Master>(std::move(channel).value(), timeout);
+  session.slave = endpoint;
   if (auto connected = session.master->connect(); !connected) return Failure{connected.error()};
   if (session.a2l) {
     if (Status same = check_epk(*session.master, *session.a2l); !same) return Failure{same.error()};

@@ -27,6 +27,7 @@ struct XcpOptions {
   double duration_s = 1.0;
   std::string output;
   std::string plot;
+  std::string mdf;
   bool event_time = false;
   std::vector<std::string> timed_writes;  // SECONDS:NAME=VALUE
   std::string address;
@@ -41,6 +42,7 @@ struct XcpOptions {
 struct Session {
   std::optional<xcp::host::A2lDescription> a2l;
   std::unique_ptr<xcp::host::Master> master;
+  xcp::host::Endpoint slave;  // where the master is connected
 };
 
 // Reads --a2l if given and, if `needs_master`, connects to --connect or else to the A2L's transport.

@@ -179,6 +179,7 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
       columns.push_back({signal, element});
       result.recording.names.push_back(count == 1 ? info.name : info.name + "[" + std::to_string(element) + "]");
       result.recording.units.push_back(info.unit);
+      result.recording.signals.emplace_back(signal);
     }
   }
   const std::vector<plant::Plant::Observable> observables =
@@ -186,6 +187,7 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
   for (const plant::Plant::Observable& observable : observables) {
     result.recording.names.push_back("plant." + observable.name);
     result.recording.units.push_back(observable.unit);
+    result.recording.signals.emplace_back(std::nullopt);
   }
   std::vector<double> observed(observables.size());
   result.recording.columns.resize(columns.size() + observables.size());

@@ -31,6 +31,7 @@ struct CompuMethod {
   Conversion conversion;
   std::string unit;
   std::string verbal_table;  // TAB_VERB: the COMPU_VTAB that names the raw values
+  std::string unapplied;     // the conversion type it cannot apply (Variable::unapplied_conversion)
 };
 
 // One item of a record layout: where it sits among the others (its position) and what it holds.
@@ -209,6 +210,7 @@ class Reader {
       if (c.size() != 6 || c[0] != 0 || c[3] != 0 || c[4] != 0 || c[1] == 0) {
         warn(block.place,
              "COMPU_METHOD " + name->value + ": a RAT_FUNC that is not linear is not applied (raw values)");
+        method.unapplied = "RAT_FUNC (not linear)";
       } else {
         method.conversion = {c[5] / c[1], -c[2] / c[1]};
       }
@@ -217,6 +219,7 @@ class Reader {
     } else if (type->value != "IDENTICAL") {
       warn(block.place,
            "COMPU_METHOD " + name->value + ": " + type->value + " conversions are not applied (raw values)");
+      method.unapplied = type->value;
     }
     compu_methods_[name->value] = method;
   }
@@ -446,6 +449,7 @@ class Reader {
       const auto method = compu_methods_.find(conversion->value);
       if (method != compu_methods_.end()) {
         variable.conversion = method->second.conversion;
+        variable.unapplied_conversion = method->second.unapplied;
         variable.unit = method->second.unit;
         if (!method->second.verbal_table.empty())
           variable.labels = verbal_table(method->second.verbal_table, *conversion);

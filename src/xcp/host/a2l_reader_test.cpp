@@ -123,6 +123,17 @@ TEST(A2lReader, AVerbalConversionNeedsItsWholeTable) {
   EXPECT_EQ(short_table.error(), engine_file() + ":63:51: COMPU_VTAB gear_table: 4 value pairs announced, 3 follow");
 }
 
+// A variable whose conversion the reader cannot apply says which (a recorder tells its reader that values are raw).
+TEST_F(EngineA2l, AVariableSaysWhichConversionIsNotApplied) {
+  const auto read = read_a2l(engine_with("UBYTE temperature 1 0.5", "UBYTE pedal 1 0.5"), engine_file());
+  ASSERT_TRUE(read.ok()) << read.error();
+  EXPECT_EQ(find(read.value().measurements, "coolant").unapplied_conversion, "TAB_INTP");
+  EXPECT_EQ(find(read.value().measurements, "engine_speed").unapplied_conversion, "");
+  const auto curved = read_a2l(engine_with("COEFFS 0 4 0 0 0 1", "COEFFS 1 4 0 0 0 1"), engine_file());
+  ASSERT_TRUE(curved.ok()) << curved.error();
+  EXPECT_EQ(find(curved.value().measurements, "engine_speed").unapplied_conversion, "RAT_FUNC (not linear)");
+}
+
 TEST(A2lReader, AnIncludeItCannotFindIsAnErrorNamingTheFile) {
   const auto read = read_a2l(engine_with("engine_units.a2l", "units.a2l"), engine_file());
   EXPECT_EQ(read.error(),

@@ -214,6 +214,12 @@ std::int64_t Master::unwrap(std::uint32_t timestamp) {
   return ticks_;
 }
 
+void Master::abandon(std::size_t list) {
+  Assembly& assembly = assemblies_[list];
+  if (deliver_incomplete_ && assembly.started) samples_.push_back({list, assembly.ticks, {}, false});
+  assembly = {};
+}
+
 void Master::take_daq(std::span<const std::uint8_t> packet) {
   if (!daq_processor_ || layouts_.empty()) {
     ++counters_.unknown_identification;
@@ -240,14 +246,17 @@ void Master::take_daq(std::span<const std::uint8_t> packet) {
   const std::size_t stamp = first && timestamps_ ? daq.timestamp_size : 0U;
   if (!first && (!assembly.started || assembly.next_odt != odt->odt)) {  // its sample's earlier ODTs are missing
     counters_.incomplete += assembly.packets + 1;
-    assembly = {};
+    abandon(odt->list);
     return;
   }
-  if (first && assembly.started) counters_.incomplete += assembly.packets;  // the last sample never ended
+  if (first && assembly.started) {  // the last sample never ended
+    counters_.incomplete += assembly.packets;
+    abandon(odt->list);
+  }
   if (packet.size() < header + stamp + odt->payload) {
     ++counters_.too_short;
     counters_.incomplete += first ? 0 : assembly.packets;
-    assembly = {};
+    abandon(odt->list);
     return;
   }
   if (packet.size() > header + stamp + odt->payload) ++counters_.padded;

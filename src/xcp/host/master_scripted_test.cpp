@@ -148,6 +148,55 @@ TEST(MasterAgainstScriptedSlave, RelativeOdtAndAlignedDaqWordWithPaddingAndIdent
   EXPECT_EQ(slave.differences(), "");
 }
 
+// A sample in two ODTs whose second never comes is given, when asked for, as incomplete with its time, in its place;
+// an ODT whose sample's first is missing has no time and is only counted.
+TEST(MasterAgainstScriptedSlave, DeliversIncompleteSamplesWithTheirTimeWhenAskedTo) {
+  ScriptedSlave slave{{
+      {"FF 00", {"FF 05 80 FF 0C 00 01 01"}},  // MAX_DTO 12: a 4-byte and a 2-byte entry take two ODTs
+      {"DA", {"FF 11 00 01 03 00 00 C0"}},
+      {"D9", {"FF 01 F8 01 00 3C 01 00"}},
+      {"D6", {ok4}},
+      {"D5 00 01 00", {ok4}},
+      {"D4 00 00 00 02", {ok4}},
+      {"D3 00 00 00 00 01", {ok4}},
+      {"D3 00 00 00 01 01", {ok4}},
+      {"E2 00 00 00 00 00", {ok4}},
+      {"E1 FF 04 00 00 10 00 00", {ok4}},
+      {"E2 00 00 00 01 00", {ok4}},
+      {"E1 FF 02 00 04 10 00 00", {ok4}},
+      {"E0 10 00 00 01 00 01 00", {ok4}},
+      {"DE 02 00 00", {ok4}},
+      {"DD 01",
+       {ok4, "00 00 00 00 10 00 00 00 01 00 00 00", "01 00 00 00 02 00",  // complete
+        "00 00 00 00 20 00 00 00 03 00 00 00",                            // its second ODT never comes
+        "00 00 00 00 30 00 00 00 05 00 00 00", "01 00 00 00 06 00",       // complete
+        "01 00 00 00 07 00"}},                                            // the second ODT alone
+      {"DD 00", {ok4}},
+      {"FE", {ok4}},
+  }};
+  {
+    Master master = connected_master(slave);
+    ASSERT_TRUE(master.connect().ok());
+    master.deliver_incomplete_samples(true);
+    const Status started =
+        master.start_daq({{.event = 1, .prescaler = 1, .entries = {{0, 0x1000, 4}, {0, 0x1004, 2}}}});
+    ASSERT_TRUE(started.ok()) << started.error();
+    const std::vector<DaqSample> samples = samples_of(master, 3);
+    ASSERT_EQ(samples.size(), 3U);
+    EXPECT_TRUE(samples[0].complete);
+    EXPECT_EQ(samples[0].bytes, (std::vector<std::uint8_t>{1, 0, 0, 0, 2, 0}));
+    EXPECT_FALSE(samples[1].complete);
+    EXPECT_EQ(samples[1].ticks, 0x20);
+    EXPECT_TRUE(samples[1].bytes.empty());
+    EXPECT_TRUE(samples[2].complete);
+    EXPECT_EQ(samples[2].ticks, 0x30);
+    EXPECT_TRUE(master.stop_daq().ok());
+    EXPECT_EQ(master.counters().incomplete, 2U);
+    EXPECT_TRUE(master.disconnect().ok());
+  }
+  EXPECT_EQ(slave.differences(), "");
+}
+
 TEST(MasterAgainstScriptedSlave, MotorolaAbsoluteWithOverloadInThePidAndSplitEntries) {
   ScriptedSlave slave{{
       {"FF 00", {"FF 05 81 08 00 20 01 01"}},  // Motorola, MAX_CTO 8, MAX_DTO 32

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,6 +38,9 @@ struct SimulationOptions {
 struct Recording {
   std::vector<std::string> names;
   std::vector<std::string> units;
+  // Per column, the index of the program's signal it records an element of (Program::signals), so that a file
+  // format with types can store its exact type; none for one of the plant's. Empty: no column is a signal's.
+  std::vector<std::optional<std::size_t>> signals;
   std::vector<double> time_s;
   std::vector<std::vector<double>> columns;
 };

@@ -75,6 +75,9 @@ struct Variable {
   std::vector<std::uint32_t> dimensions;
   // A CURVE's or MAP's axes, x first (read only: the writer writes values and arrays).
   std::vector<Axis> axes;
+  // The COMPU_METHOD's type when the reader cannot apply it (TAB_INTP, FORM, "RAT_FUNC (not linear)", ...):
+  // `conversion` is then the identity and the values are raw. Empty: `conversion` (or `labels`) is the whole story.
+  std::string unapplied_conversion;
   bool operator==(const Variable&) const = default;
 };
 

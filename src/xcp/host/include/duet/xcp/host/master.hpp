@@ -35,11 +35,13 @@ struct SlaveProperties {
 
 // One sample of one DAQ list: the entries' bytes one after another, in the order they were set up, and the slave's
 // timestamp in ticks (DaqProcessor::seconds_per_tick()) counted on across the timestamp's wraps; 0 when the slave
-// sends none. Unwrapping needs successive samples less than half the timestamp's range apart.
+// sends none. Unwrapping needs successive samples less than half the timestamp's range apart. An incomplete sample
+// (Master::deliver_incomplete_samples) has its list and ticks but no bytes.
 struct DaqSample {
   std::size_t list = 0;
   std::int64_t ticks = 0;
   std::vector<std::uint8_t> bytes;
+  bool complete = true;
 };
 
 // Packets the master received but could not use, by reason, and the losses the link and the slave reported.
@@ -91,6 +93,10 @@ class Master {
   Status stop_daq();
   // Samples decoded so far, waiting up to `wait` for at least one.
   Result<std::vector<DaqSample>> receive_samples(std::chrono::milliseconds wait);
+  // Whether receive_samples() also gives the samples whose first ODT came but not all the others (counted as
+  // incomplete either way), marked incomplete in their place among the others: for a recorder that keeps a missing
+  // sample's time. Off by default.
+  void deliver_incomplete_samples(bool deliver) { deliver_incomplete_ = deliver; }
 
   [[nodiscard]] const SlaveProperties& properties() const { return properties_; }
   [[nodiscard]] const std::optional<DaqProcessor>& daq_processor() const { return daq_processor_; }
@@ -122,6 +128,8 @@ class Master {
   Result<std::vector<std::uint8_t>> upload_at_mta(std::uint32_t size);
   void take_asynchronous(std::vector<std::uint8_t> packet);
   void take_daq(std::span<const std::uint8_t> packet);
+  // Drops a list's sample in assembly: a missing sample for receive_samples() if asked for and its time is known.
+  void abandon(std::size_t list);
   // The layout of the ODT a DAQ packet names, or nullptr.
   [[nodiscard]] const OdtLayout* odt_of(std::span<const std::uint8_t> packet, std::uint8_t odt_number) const;
   std::int64_t unwrap(std::uint32_t timestamp);
@@ -137,6 +145,7 @@ class Master {
   std::optional<std::uint32_t> last_timestamp_;
   std::int64_t ticks_ = 0;
   std::deque<DaqSample> samples_;
+  bool deliver_incomplete_ = false;
   PacketCounters counters_;
 };
 
