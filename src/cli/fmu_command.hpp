@@ -1,5 +1,6 @@
 #pragma once
-// `duet fmu`: FMI co-simulation FMUs; `duet fmu info` describes one (docs/FMI.md).
+// `duet fmu`: FMI co-simulation FMUs; `duet fmu info` describes one, `duet fmu export` makes one of a model
+// (docs/FMI.md).
 
 #include "subcommand.hpp"
 

@@ -106,7 +106,9 @@ std::string write(const ModelDescription& description) {
   set(root, v2 ? "guid" : "instantiationToken", description.token);
   set_if(root, "description", description.description);
   set_if(root, "generationTool", description.generation_tool);
-  set(root, "variableNamingConvention", "structured");
+  // Flat: duet's names ("gpio:LED0" of a resource, "x[0]" of an element) are plain strings, not the structured
+  // convention's paths.
+  set(root, "variableNamingConvention", "flat");
 
   const CoSimulation& co_simulation = description.co_simulation;
   pugi::xml_node element = root.append_child("CoSimulation");

@@ -59,7 +59,8 @@ const std::set<std::string>& keywords() {
       // Names the generated code uses itself.
       "signals", "state", "parameters", "p", "description", "memory", "tasks", "initialize", "terminate",
       "parameter_page", "reference_parameters", "parameters_in_use", "block_inputs", "block_outputs",
-      "block_parameters", "value", "i", "std", "duet", "code", "xcp", "Limits", "parameter_limits"};
+      "block_parameters", "value", "i", "std", "duet", "code", "xcp", "Limits", "parameter_limits", "instance",
+      "Instance"};
   return words;
 }
 
@@ -98,12 +99,13 @@ std::string reserved(const std::string& what, const std::string& name) {
 
 class FileWriter {
  public:
-  FileWriter(const Program& program, std::string source, std::string model_folder)
+  FileWriter(const Program& program, std::string source, std::string model_folder, Storage storage)
       : program_(program),
         generator_(program),
         source_(std::move(source)),
         model_folder_(std::move(model_folder)),
-        name_(program.model->name) {
+        name_(program.model->name),
+        per_instance_(storage == Storage::per_instance) {
     std::size_t size = 0;
     parameters_ = lay_out(generator_.parameter_fields(), size);
     parameters_size_ = size;
@@ -188,12 +190,20 @@ class FileWriter {
       if (block.block->code) text += code_structures(program_, block) + "\n";
     }
     text += "// The blocks' state.\nstruct State {\n" + generator_.state_members() + "};\n\n";
-    text += "extern Parameters parameters;\nextern const Parameters reference_parameters;\n\n";
+    text += per_instance_ ? "" : "extern Parameters parameters;\n";
+    text += "extern const Parameters reference_parameters;\n\n";
     text += "// What the steps write, in one object so that a step reaches all of it from one address.\n";
     text += "struct Memory {\n  const std::uint8_t* volatile parameter_page;\n  Signals signals;\n  State state;\n};\n";
-    text += "extern Memory memory;\n";
-    text += "inline const std::uint8_t* volatile& parameter_page = memory.parameter_page;\n";
-    text += "inline Signals& signals = memory.signals;\ninline State& state = memory.state;\n\n";
+    if (per_instance_) {
+      text += "// One instance's storage. The functions below work on the instance `instance` points to, which the\n";
+      text += "// caller sets around each call (in its thread): so that several instances run in one process.\n";
+      text += "struct Instance {\n  Parameters parameters;\n  Memory memory;\n};\n";
+      text += "extern thread_local Instance* instance;\n\n";
+    } else {
+      text += "extern Memory memory;\n";
+      text += "inline const std::uint8_t* volatile& parameter_page = memory.parameter_page;\n";
+      text += "inline Signals& signals = memory.signals;\ninline State& state = memory.state;\n\n";
+    }
     text += "// Resets the state, selects the working page and computes the constant blocks. Before the first step.\n";
     text += "void initialize();\nvoid terminate();\n";
     for (const ProgramTask& task : program_.tasks) {
@@ -222,6 +232,15 @@ class FileWriter {
             "                                                    .terminate = terminate};\n";
     text += "\n}  // namespace " + name_ + "\n";
     return text;
+  }
+
+  // Per instance, a function's first lines: the names the steps use, bound to the current instance's storage.
+  std::string storage_prologue() const {
+    if (!per_instance_) return {};
+    return "  Memory& memory = instance->memory;\n"
+           "  [[maybe_unused]] const std::uint8_t* volatile& parameter_page = memory.parameter_page;\n"
+           "  [[maybe_unused]] Signals& signals = memory.signals;\n"
+           "  [[maybe_unused]] State& state = memory.state;\n";
   }
 
   std::string values(const Parameter& parameter) const {
@@ -258,15 +277,17 @@ class FileWriter {
     for (const Parameter& parameter : program_.model->parameters) {
       initial += "    ." + parameter.name + " = " + values(parameter) + ",\n";
     }
-    text += "\nParameters parameters{\n" + initial + "};\nconst Parameters reference_parameters{\n" + initial + "};\n";
-    text += "Memory memory{};\n\n";
+    text += per_instance_ ? "\n" : "\nParameters parameters{\n" + initial + "};\n";
+    text += "const Parameters reference_parameters{\n" + initial + "};\n";
+    text += per_instance_ ? "thread_local Instance* instance = nullptr;\n\n" : "Memory memory{};\n\n";
     text += "namespace {\n\n" + generator_.block_constants();
     text += "\n// The page the steps read (it points at one of the two Parameters objects).\n";
     text += "[[maybe_unused]] const Parameters& parameters_in_use() {\n";
-    text +=
-        "  return *std::launder(static_cast<const Parameters*>(static_cast<const void*>(parameter_page)));\n}\n\n}  // "
-        "namespace\n\n";
-    text += "void initialize() {\n  parameter_page = reinterpret_cast<const std::uint8_t*>(&parameters);\n";
+    text += std::string{"  return *std::launder(static_cast<const Parameters*>(static_cast<const void*>("} +
+            (per_instance_ ? "instance->memory." : "") + "parameter_page)));\n}\n\n}  // namespace\n\n";
+    text += "void initialize() {\n" + storage_prologue() +
+            (per_instance_ ? "  Parameters& parameters = instance->parameters;\n" : "");
+    text += "  parameter_page = reinterpret_cast<const std::uint8_t*>(&parameters);\n";
     text += generator_.state_resets();
     std::string constants;
     for (const std::size_t block : program_.initial_outputs) constants += generator_.output_phase(block);
@@ -279,8 +300,8 @@ class FileWriter {
       for (const std::size_t block : task.outputs) body += generator_.output_phase(block);
       for (const std::size_t block : task.updates) body += generator_.update_phase(block);
       body += generator_.task_epilogue(index);
-      text +=
-          "\nvoid " + task_function_name(task) + "() {\n" + (reads_parameters(body) ? read_page : "") + body + "}\n";
+      text += "\nvoid " + task_function_name(task) + "() {\n" + storage_prologue() +
+              (reads_parameters(body) ? read_page : "") + body + "}\n";
     }
     text += "\n// The task table fits the executive (duet/rt/task_table.hpp).\n";
     text += "static_assert(duet::rt::check(description) == duet::rt::TaskTableError::none);\n";
@@ -622,13 +643,14 @@ class FileWriter {
   std::vector<Field> signals_;
   std::size_t signals_size_ = 1;
   std::vector<rt::InterruptPriority> priorities_;
+  bool per_instance_ = false;
 };
 
 }  // namespace
 
 Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,
-                                            const std::string& model_folder) {
-  return FileWriter{program, source, model_folder}.files();
+                                            const std::string& model_folder, Storage storage) {
+  return FileWriter{program, source, model_folder, storage}.files();
 }
 
 std::string account_task_name(const ProgramTask& task) {

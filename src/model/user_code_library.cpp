@@ -1,21 +1,15 @@
 #include "duet/model/user_code_library.hpp"
 
 #include <dlfcn.h>
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
+#include <stdlib.h>  // mkdtemp
 
-#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <vector>
 
-#include "duet/support/text_file.hpp"
+#include "duet/support/compiler.hpp"
 #include "user_code.hpp"
-
-extern char** environ;  // NOLINT(readability-redundant-declaration): POSIX declares it nowhere in C++ headers
 
 namespace duet::model {
 namespace {
@@ -58,41 +52,6 @@ std::string library_source(const Program& program) {
   return text + "}  // namespace duet_simulation\n";
 }
 
-// Runs the compiler; its messages on failure.
-Result<Done> compile(const std::filesystem::path& source, const std::filesystem::path& library,
-                     const std::filesystem::path& model_folder, const std::filesystem::path& messages) {
-  const char* compiler = std::getenv("CXX");
-  std::vector<std::string> arguments{compiler != nullptr && *compiler != '\0' ? compiler : "c++",
-                                     "-std=c++20",
-                                     "-O2",
-                                     "-ffp-contract=off",  // as duet_blocks: the firmware's rounding
-                                     "-fPIC",
-                                     "-shared",
-                                     "-I" + model_folder.string(),
-                                     "-I" DUET_BLOCKS_INCLUDE_DIR,
-                                     "-o",
-                                     library.string(),
-                                     source.string()};
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
-  pid_t child = 0;
-  const int spawned = posix_spawnp(&child, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return Failure{"the C++ compiler '" + arguments[0] + "' was not found (set CXX)"};
-  int status = 0;
-  waitpid(child, &status, 0);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    const auto text = read_text_file(messages.string());
-    return Failure{"the Code blocks did not compile:\n" + (text.ok() ? text.value() : std::string{})};
-  }
-  return done();
-}
-
 }  // namespace
 
 Result<std::unique_ptr<UserCodeLibrary>> UserCodeLibrary::build(const Program& program) {
@@ -108,7 +67,18 @@ Result<std::unique_ptr<UserCodeLibrary>> UserCodeLibrary::build(const Program& p
   std::ofstream{source} << library_source(program);
   const std::filesystem::path model_folder =
       std::filesystem::absolute(std::filesystem::path{program.model->file}).parent_path();
-  if (auto compiled = compile(source, shared, model_folder, library->folder_ / "messages.txt"); !compiled) {
+  std::vector<std::string> command{cxx_compiler(),
+                                   "-std=c++20",
+                                   "-O2",
+                                   "-ffp-contract=off",  // as duet_blocks: the firmware's rounding
+                                   "-fPIC",
+                                   "-shared",
+                                   "-I" + model_folder.string(),
+                                   "-I" DUET_BLOCKS_INCLUDE_DIR,
+                                   "-o",
+                                   shared.string(),
+                                   source.string()};
+  if (auto compiled = compile(std::move(command), library->folder_ / "messages.txt", "the Code blocks"); !compiled) {
     return Failure{compiled.error()};
   }
   library->handle_ = dlopen(shared.c_str(), RTLD_NOW | RTLD_LOCAL);

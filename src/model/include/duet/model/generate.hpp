@@ -49,9 +49,15 @@ inline constexpr std::string_view executive_segment = "executive";
 // `duet gen` writes code for it (program.cpp).
 [[nodiscard]] std::vector<Diagnostic> precision_warnings(const Program& program);
 
+// Where the generated code keeps its parameters, signals and state: in global objects (the firmware: one model per
+// core, at the A2L's addresses), or per instance, through a thread-local pointer to the instance the caller works on
+// (an FMU: several instances in one process; the header's `Instance` and `instance`).
+enum class Storage { global, per_instance };
+
 // `source` names the model file in the files' first lines; `model_folder` is the model's folder relative to where the
 // files go, for the CMake fragment to find the Code blocks' headers.
 [[nodiscard]] Result<std::vector<GeneratedFile>> generate(const Program& program, const std::string& source,
-                                                          const std::string& model_folder = "..");
+                                                          const std::string& model_folder = "..",
+                                                          Storage storage = Storage::global);
 
 }  // namespace duet::model
