@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "checked_model.hpp"
+#include "duet/fmu_plant/fmu_plant.hpp"
 #include "duet/mdf4_recording/recording_file.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
@@ -37,6 +38,8 @@ struct SimOptions {
   bool seed_given = false;
   std::string scenario;
   std::vector<std::string> settings;  // NAME=VALUE or NAME=V1,V2,...
+  std::string connect;                // with an .fmu plant: the mapping file
+  std::vector<std::string> fmu_settings;
 };
 
 // A parameter's new value from the command line, as the model's parameter number and its elements.
@@ -82,6 +85,21 @@ Result<std::vector<Setting>> parse_settings(const model::Model& model, const std
   return result;
 }
 
+// An imported FMU as the plant, stepping at the model's base period; its log goes to stderr.
+Result<model::SimulationPlant> fmu_plant(const SimOptions& options, double base_period_s, Streams streams) {
+  auto mapping = fmu_plant::read_fmu_mapping(options.connect);
+  if (!mapping) return Failure{mapping.error()};
+  for (const std::string& setting : options.fmu_settings) {
+    if (auto added = fmu_plant::add_setting(mapping.value(), setting); !added) return Failure{added.error()};
+  }
+  auto plant = fmu_plant::FmuPlant::load({.fmu = options.plant,
+                                          .mapping = std::move(mapping).value(),
+                                          .step_s = base_period_s,
+                                          .log = [&err = streams.err](std::string_view line) { err << line << '\n'; }});
+  if (!plant) return Failure{plant.error()};
+  return model::SimulationPlant{std::move(plant).value(), {}};
+}
+
 bool write_file(const std::string& path, const std::string& text, Streams streams) {
   std::ofstream file{path};
   file << text;
@@ -92,8 +110,10 @@ bool write_file(const std::string& path, const std::string& text, Streams stream
 ExitCode run_sim(const SimOptions& options, Streams streams) {
   const auto checked = load_checked_model(options.file, streams.err);
   if (!checked) return ExitCode::failure;
-  auto plant = model::make_simulation_plant(options.plant, options.scenario,
-                                            options.seed_given ? std::optional{options.seed} : std::nullopt);
+  auto plant = options.plant.ends_with(".fmu")
+                   ? fmu_plant(options, checked->program.model->base_period_us * 1e-6, streams)
+                   : model::make_simulation_plant(options.plant, options.scenario,
+                                                  options.seed_given ? std::optional{options.seed} : std::nullopt);
   if (!plant) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
@@ -117,6 +137,8 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
     streams.err << "duet sim: " << simulated.error() << '\n';
     return ExitCode::failure;
   }
+  if (!simulated.value().plant_stop.empty())
+    streams.err << "duet sim: the plant ended the run: " << simulated.value().plant_stop << '\n';
   const model::Recording& recording = simulated.value().recording;
   const std::string name = checked->model->name;
   // With --mdf and no --csv, the MDF file is the recording.
@@ -136,8 +158,10 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
       return ExitCode::failure;
     }
   }
-  streams.out << "simulated " << name << " for " << options.duration_s << " s (" << simulated.value().ticks
-              << " base ticks) against plant '" << options.plant << "'; wrote "
+  const double simulated_s = recording.time_s.empty() ? 0.0 : recording.time_s.back();
+  streams.out << "simulated " << name << " for "
+              << (simulated.value().plant_stop.empty() ? options.duration_s : simulated_s) << " s ("
+              << simulated.value().ticks << " base ticks) against plant '" << options.plant << "'; wrote "
               << (csv.empty() || options.mdf.empty() ? csv + options.mdf : csv + " and " + options.mdf) << " ("
               << recording.names.size() << " columns)";
   if (!options.no_plot) {
@@ -165,9 +189,11 @@ Action define_sim_command(CLI::App& command) {
   auto options = std::make_shared<SimOptions>();
   command.add_option("model", options->file, "The model file (docs/MODELS.md)")->required();
   command
-      .add_option("--plant", options->plant,
-                  "What the model's hardware blocks are connected to: " + plant_list() +
-                      ", or a model file (.yaml) whose PlantInput and PlantOutput blocks meet them")
+      .add_option(
+          "--plant", options->plant,
+          "What the model's hardware blocks are connected to: " + plant_list() +
+              ", a model file (.yaml) whose PlantInput and PlantOutput blocks meet them, or a co-simulation FMU "
+              "(.fmu) with --connect")
       ->capture_default_str();
   command.add_option("--duration", options->duration_s, "Simulated time in seconds")
       ->capture_default_str()
@@ -186,7 +212,24 @@ Action define_sim_command(CLI::App& command) {
   command.add_option("--scenario", options->scenario,
                      "With --plant balbot: what happens to the robot (src/plant/balbot/README.md); --seed, if given, "
                      "replaces its seed");
+  command
+      .add_option("--connect", options->connect,
+                  "With an FMU as --plant: the mapping file (YAML) of its variables to the model's resources "
+                  "(docs/FMI.md)")
+      ->type_name("FILE");
+  command
+      .add_option("--fmu-set", options->fmu_settings,
+                  "With an FMU as --plant: a parameter or start value, NAME=VALUE (repeat for more)")
+      ->type_name("NAME=VALUE");
   return [options, seed](Streams streams) {
+    const bool fmu = options->plant.ends_with(".fmu");
+    if (fmu != !options->connect.empty() || (!fmu && !options->fmu_settings.empty())) {
+      streams.err << "duet sim: "
+                  << (fmu ? "an FMU as --plant needs --connect MAPPING.yaml"
+                          : "--connect and --fmu-set are for an FMU as --plant (X.fmu)")
+                  << '\n';
+      return ExitCode::usage;
+    }
     options->seed_given = seed->count() > 0;
     return run_sim(*options, streams);
   };

@@ -2,8 +2,10 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "duet/mdf4/reader.hpp"
 #include "duet/plot/csv.hpp"
@@ -90,6 +92,55 @@ TEST_F(SimGen, SimAgainstAPlantThatIsAModel) {
   const std::string last = csv.substr(csv.rfind('\n', csv.size() - 2) + 1);
   const double sample = std::stod(last.substr(last.find(',') + 1));
   EXPECT_NEAR(sample, 2000, 10) << last;
+}
+
+TEST_F(SimGen, SimAgainstAnFmu) {
+  const std::string testing = std::string{DUET_SOURCE_DIR} + "/src/fmu_plant/testing/";
+  const std::string fmus = std::string{DUET_TEST_FMU_DIR} + "/";
+  const std::string controller = testing + "lag_controller.yaml";
+  Outcome outcome =
+      run({"sim", controller, "--plant", fmus + "FirstOrderLag_fmi3.fmu", "--connect", testing + "lag.connect.yaml",
+           "--fmu-set", "k=3", "--duration", "0.1", "--csv", in_folder("lag.csv"), "--no-plot"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  const std::string csv = read_text_file(in_folder("lag.csv")).value();
+  ASSERT_EQ(csv.substr(0, csv.find('\n')), "time_s,sample,plant.y");
+  // The duty of 50 set at tick 0 drives the lag from the step after: y_n = 3·50·(1 - exp(-n·0.01/0.05)).
+  std::istringstream rows{csv.substr(csv.find('\n') + 1)};
+  int tick = 0;
+  for (std::string row; std::getline(rows, row); ++tick) {
+    const double y = std::stod(row.substr(row.rfind(',') + 1));
+    EXPECT_NEAR(y, 150.0 * (1 - std::exp(-tick * 0.2)), 1e-9) << row;
+  }
+  EXPECT_EQ(tick, 11);
+
+  write("stop.yaml", "outputs:\n  - {variable: y, resource: \"adc:ADC1/6\"}\n");
+  outcome = run({"sim", controller, "--plant", fmus + "Terminating_fmi2.fmu", "--connect", in_folder("stop.yaml"),
+                 "--fmu-set", "stop_at=0.05", "--csv", in_folder("stop.csv"), "--no-plot"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.err, "duet sim: the plant ended the run: Terminating asked to stop at t = 0.05 s\n");
+  EXPECT_EQ(outcome.out.substr(0, outcome.out.find(';')),
+            "simulated lag_controller for 0.05 s (6 base ticks) against plant '" + fmus + "Terminating_fmi2.fmu'");
+
+  outcome = run({"sim", controller, "--plant", fmus + "Failing_fmi3.fmu", "--connect", in_folder("stop.yaml"),
+                 "--fmu-set", "fail_at=0.05", "--no-plot", "--csv", in_folder("fail.csv")});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err,
+            "Failing: Error: The model failed in this step\n"
+            "duet sim: the plant failed: Failing at t = 0.04 s: fmi3DoStep returned Error: The model failed in this "
+            "step\n");
+
+  outcome = run({"sim", controller, "--plant", fmus + "FirstOrderLag_fmi3.fmu"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_EQ(outcome.err, "duet sim: an FMU as --plant needs --connect MAPPING.yaml\n");
+  outcome = run({"sim", controller, "--connect", testing + "lag.connect.yaml"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::usage);
+  EXPECT_EQ(outcome.err, "duet sim: --connect and --fmu-set are for an FMU as --plant (X.fmu)\n");
+  outcome = run({"sim", controller, "--plant", fmus + "NoBinary.fmu", "--connect", testing + "lag.connect.yaml"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, "duet sim: " + fmus +
+                             "NoBinary.fmu: no binaries/x86_64-linux/FirstOrderLag.so: the FMU has no library for "
+                             "Linux x86_64 (FMI 3.0), so duet cannot run it\n");
 }
 
 TEST_F(SimGen, SimRefusesWhatItCannotRun) {

@@ -9,7 +9,7 @@
 #include <set>
 
 #include "duet/fmi/archive.hpp"
-#include "duet/fmi/model_description_reader.hpp"
+#include "duet/fmi/fmu_contents.hpp"
 
 namespace duet::fmi {
 namespace {
@@ -31,12 +31,8 @@ nlohmann::json optional_number(const std::optional<double>& value) {
 Result<FmuInfo> read_fmu_info(const std::filesystem::path& file) {
   auto archive = Archive::open(file);
   if (!archive) return Failure{archive.error()};
-  if (!archive.value().contains("modelDescription.xml"))
-    return Failure{file.string() + ": no modelDescription.xml at the archive's root"};
-  auto xml = archive.value().read("modelDescription.xml");
-  if (!xml) return Failure{xml.error()};
-  auto description = read_model_description(xml.value());
-  if (!description) return Failure{file.string() + ": " + description.error()};
+  auto description = read_description(archive.value(), file);
+  if (!description) return Failure{description.error()};
   FmuInfo info{.description = std::move(description).value()};
   std::set<std::string> platforms;
   for (const ArchiveEntry& entry : archive.value().entries()) {
@@ -46,9 +42,7 @@ Result<FmuInfo> read_fmu_info(const std::filesystem::path& file) {
     if (slash != std::string::npos) platforms.insert(entry.name.substr(binaries.size(), slash - binaries.size()));
   }
   info.platforms.assign(platforms.begin(), platforms.end());
-  const bool v2 = info.description.version == FmiVersion::v2;
-  info.linux_binary = std::string{"binaries/"} + (v2 ? "linux64" : "x86_64-linux") + "/" +
-                      info.description.co_simulation.model_identifier + ".so";
+  info.linux_binary = linux_binary(info.description);
   info.has_linux_binary = archive.value().contains(info.linux_binary);
   return info;
 }

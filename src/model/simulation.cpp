@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -216,8 +217,13 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
       for (std::size_t k = 0; k < observed.size(); ++k)
         result.recording.columns[columns.size() + k].push_back(observed[k]);
     }
+    if (const std::optional<plant::Plant::Halt> halt = plant.halted()) {
+      if (halt->failed) return Failure{"the plant failed: " + halt->reason};
+      result.plant_stop = halt->reason;
+      break;
+    }
   }
-  result.ticks = ticks;
+  result.ticks = result.recording.time_s.size();
   for (std::size_t task = 0; task < program.tasks.size(); ++task)
     result.activations.push_back(runner.activations(task));
   return result;

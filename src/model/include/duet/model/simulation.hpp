@@ -49,6 +49,7 @@ struct SimulationResult {
   Recording recording;
   std::uint64_t ticks = 0;
   std::vector<std::uint32_t> activations;  // per task
+  std::string plant_stop;  // why the plant ended the run early (Plant::halted), the tick it asked in recorded
 };
 
 [[nodiscard]] Result<SimulationResult> simulate(const Program& program, plant::Plant& plant,

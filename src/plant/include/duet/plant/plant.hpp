@@ -7,6 +7,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -61,6 +62,14 @@ class Plant {
   };
   [[nodiscard]] virtual std::vector<Observable> observables() const { return {}; }
   virtual void observe(std::span<double> values) const { (void)values; }
+
+  // Why the plant cannot go on, once it cannot (an imported FMU that failed, or asked to stop); nothing while it can.
+  // A simulation stops there: a failure fails it, a request ends it early.
+  struct Halt {
+    std::string reason;
+    bool failed = false;
+  };
+  [[nodiscard]] virtual std::optional<Halt> halted() const { return std::nullopt; }
 
   // The disturbances the plant offers; none unless a plant says.
   [[nodiscard]] virtual std::vector<DisturbanceKind> disturbances() const { return {}; }
