@@ -94,6 +94,39 @@ TEST_F(SimGen, SimAgainstAPlantThatIsAModel) {
   EXPECT_NEAR(sample, 2000, 10) << last;
 }
 
+// Issue #25's round trip: the thermostat's plant model exported as an FMU (3.0 and 2.0) and imported back as its
+// plant closes the same loop, bit for bit, as the plant model itself (lock-step; the plant at its own 1 ms base
+// period inside the thermostat's 10 ms steps either way).
+TEST_F(SimGen, TheHeaterExportedAsAnFmuAndImportedBackClosesTheSameLoopBitForBit) {
+  const std::string thermostat = examples + "thermostat/thermostat.yaml";
+  Outcome outcome = run({"sim", thermostat, "--plant", examples + "thermostat/heater.yaml", "--duration", "5", "--csv",
+                         in_folder("native.csv"), "--no-plot"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  const std::string native = read_text_file(in_folder("native.csv")).value();
+  ASSERT_EQ(native.substr(0, native.find('\n')), "time_s,sample,heating");
+  ASSERT_NE(native.find(",0\n"), std::string::npos);  // the heating switches off and on: a loop worth comparing
+  for (const std::string version : {"3", "2"}) {
+    const std::string fmu = in_folder("heater" + version + ".fmu");
+    outcome = run({"fmu", "export", examples + "thermostat/heater.yaml", "-o", fmu, "--fmi", version});
+    ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+    const std::string csv = in_folder("fmu" + version + ".csv");
+    outcome = run({"sim", thermostat, "--plant", fmu, "--connect", examples + "thermostat/heater.connect.yaml",
+                   "--duration", "5", "--csv", csv, "--no-plot"});
+    ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+    // The same rows, and beside them what the FMU shows of itself (its output, plant.adc:ADC1/6).
+    std::istringstream native_rows{native};
+    std::istringstream fmu_rows{read_text_file(csv).value()};
+    std::size_t rows = 0;
+    for (std::string expected, row; std::getline(native_rows, expected); ++rows) {
+      ASSERT_TRUE(std::getline(fmu_rows, row)) << "FMI " << version << ": ends before " << expected;
+      EXPECT_EQ(row.substr(0, expected.size() + 1), expected + ",") << "FMI " << version;
+    }
+    EXPECT_EQ(rows, 502U);
+    std::string extra;
+    EXPECT_FALSE(std::getline(fmu_rows, extra)) << extra;
+  }
+}
+
 TEST_F(SimGen, SimAgainstAnFmu) {
   const std::string testing = std::string{DUET_SOURCE_DIR} + "/src/fmu_plant/testing/";
   const std::string fmus = std::string{DUET_TEST_FMU_DIR} + "/";

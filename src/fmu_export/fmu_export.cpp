@@ -29,6 +29,7 @@ std::vector<std::string> build_command(const std::filesystem::path& folder, cons
   const std::filesystem::path runtime = source / "src/fmu_export/runtime";
   std::vector<std::string> command{cxx_compiler(), "-std=c++20", "-O2",
                                    "-ffp-contract=off",  // as duet_blocks: the rounding of `duet sim` and the firmware
+                                   "-fno-exceptions", "-fno-rtti",  // as the firmware: nothing to throw or ask
                                    "-fPIC", "-shared", "-fvisibility=hidden", "-fvisibility-inlines-hidden",
                                    // Loads into any process: no libstdc++ of the importer's needed, none of ours shown.
                                    "-static-libstdc++", "-static-libgcc", "-Wl,--exclude-libs,ALL",

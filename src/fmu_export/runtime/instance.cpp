@@ -3,8 +3,16 @@
 #include <algorithm>
 #include <cstdio>
 
+namespace __gnu_cxx {  // NOLINT: libstdc++'s own namespace
+void __freeres();      // libstdc++'s: frees what it keeps until the process ends (valgrind calls it at exit)
+}  // namespace __gnu_cxx
+
 namespace duet::fmu {
 namespace {
+
+// The FMU links libstdc++ in, whose exception pool lives until the process ends; an importer that unloads the FMU
+// (dlclose) would lose it, and a leak checker says so. Given back when the library is unloaded.
+[[gnu::destructor]] void give_back_the_standard_librarys_pool() { __gnu_cxx::__freeres(); }
 
 thread_local Instance* running_instance = nullptr;
 
