@@ -121,7 +121,8 @@ TEST_F(MonitorTargetTest, TheRecorderTriggersOnTheDaqSamples) {
   ASSERT_TRUE(client.next("description"));
   const auto first = client.next("samples");
   ASSERT_TRUE(first);
-  const double level = (*first)["values"][0].back().get<double>() + 100;  // 100 ms from now
+  // A second from now: the recorder is armed before the counter gets there even on a loaded machine.
+  const double level = (*first)["values"][0].back().get<double>() + 1000;
   client.send({{"type", "record"},
                {"signal", "counter"},
                {"level", level},
