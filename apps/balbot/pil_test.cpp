@@ -13,6 +13,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "child_program.hpp"
@@ -226,6 +227,108 @@ TEST(BalbotPil, XcpRecordWritesToMdfTheValuesItWritesToCsv) {
     EXPECT_EQ(sample, rows[group].size());
     EXPECT_GT(sample, group == 0 ? 500U : 50U);
   }
+}
+
+// The acceptance of `duet pil --signal`: one lock-step run of 10 s of model time writes one MDF file with the plant's
+// truth (a row per tick) and the firmware's signals by XCP, a group per event, both on the simulation's time. The
+// firmware tells the plant tick n (n ms) as the tick begins, before its executive counts it: the tasks of that tick
+// run, and their DAQ samples are stamped, at (n + 1) ms and the few microseconds they start after the tick. So the
+// rate 10 task, which runs in the ticks 0, 10, 20, ... as duet sim runs it, stamps 1 ms, 11 ms, 21 ms, ..., and the
+// firmware's tilt estimate (theta, Kalman-filtered, deg) stamped t follows the plant's true tilt (theta_deg) of the
+// row 1 ms before.
+TEST(BalbotPil, PilRecordsThePlantsTruthAndTheFirmwaresSignalsInOneMdfFile) {
+  if (!std::filesystem::exists(BALBOT_PIL_FIRMWARE)) GTEST_SKIP() << "no firmware image " << BALBOT_PIL_FIRMWARE;
+  const TemporaryFile mdf{"pil_signals.mf4"};
+  Program pil{DUET_PROGRAM,
+              {"pil",
+               BALBOT_PIL_FIRMWARE,
+               "--scenario",
+               DUET_BALBOT_SCENARIO,
+               "--lock-step",
+               "--duration",
+               "10",
+               "--xcp",
+               "127.0.0.1:0",
+               "--websocket",
+               "127.0.0.1:0",
+               "--mdf",
+               mdf.path(),
+               "--a2l",
+               DUET_BALBOT_A2L,
+               "--signal",
+               "theta",
+               "--signal",
+               "y@rate 10",
+               "--event",
+               "rate 1"},
+              "pil_signals"};
+  ASSERT_TRUE(pil.started());
+  const std::vector<std::string> lines = all_lines(pil);
+  ASSERT_EQ(pil.wait(), 0) << pil.errors();
+  const auto daq_line = std::find_if(lines.begin(), lines.end(),
+                                     [](const std::string& line) { return line.starts_with("  daq       recorded "); });
+  ASSERT_NE(daq_line, lines.end());
+  EXPECT_NE(daq_line->find("(0 overloads, 0 lost packets, 0 discarded)"), std::string::npos) << *daq_line;
+
+  auto reader = mdf4::Reader::open(mdf.path());
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  const mdf4::FileInfo& info = reader.value().info();
+  EXPECT_TRUE(info.finalised);
+  ASSERT_EQ(info.groups.size(), 3U);
+  EXPECT_EQ(info.groups[0].name, "every tick");
+  EXPECT_EQ(info.groups[1].name, "rate 1");
+  EXPECT_EQ(info.groups[2].name, "rate 10");
+  EXPECT_EQ(info.groups[0].samples, 10001U);  // the ticks 0 to 10 s
+
+  // The plant's true tilt by tick.
+  std::size_t theta_deg = 0;
+  for (std::size_t channel = 0; channel < info.groups[0].channels.size(); ++channel) {
+    if (info.groups[0].channels[channel].name == "theta_deg") theta_deg = channel;
+  }
+  ASSERT_NE(theta_deg, 0U);
+  std::vector<double> truth(10001, NAN);
+  const auto tick_of = [](double time_s) { return static_cast<std::size_t>(std::llround(time_s * 1000)); };
+  ASSERT_TRUE(reader.value()
+                  .for_each_record(0,
+                                   [&](const mdf4::Record& record) {
+                                     const std::size_t tick = tick_of(record.time());
+                                     if (tick < truth.size()) truth[tick] = mdf4::to_double(record.value(theta_deg));
+                                   })
+                  .ok());
+
+  // Each event's samples, a period apart from DAQ's start to the run's end: none lost, none twice; 1 ms after the
+  // ticks that ran them.
+  for (const auto& [group, period_ms] : {std::pair{std::size_t{1}, 1U}, std::pair{std::size_t{2}, 10U}}) {
+    std::vector<double> times;
+    ASSERT_TRUE(reader.value()
+                    .for_each_record(group, [&](const mdf4::Record& record) { times.push_back(record.time()); })
+                    .ok());
+    ASSERT_GT(times.size(), 100U) << "group " << group;
+    EXPECT_GE(times.front(), 0.001);
+    EXPECT_LT(times.back(), 10.0011);  // the last tick's, at 10 s, stamped 10.001 s and its task's start
+    EXPECT_EQ(times.size(), (tick_of(times.back()) - tick_of(times.front())) / period_ms + 1)
+        << "group " << group << " from " << times.front() << " s to " << times.back() << " s";
+    for (double time_s : times) ASSERT_EQ(tick_of(time_s) % period_ms, 1U % period_ms) << time_s;
+  }
+
+  // The firmware's estimate against the truth, once the sensor is ready (1.5 s) and the filter has settled.
+  double largest_difference = 0;
+  double sum_of_differences = 0;
+  std::size_t compared = 0;
+  ASSERT_TRUE(reader.value()
+                  .for_each_record(1,
+                                   [&](const mdf4::Record& record) {
+                                     const std::size_t tick = tick_of(record.time()) - 1;
+                                     if (record.time() < 2.5 || tick >= truth.size()) return;
+                                     const double difference = std::abs(mdf4::to_double(record.value(1)) - truth[tick]);
+                                     largest_difference = std::max(largest_difference, difference);
+                                     sum_of_differences += difference;
+                                     ++compared;
+                                   })
+                  .ok());
+  EXPECT_GT(compared, 7000U);
+  EXPECT_LT(largest_difference, 1.0);                                  // 0.35 deg when written
+  EXPECT_LT(sum_of_differences / static_cast<double>(compared), 0.2);  // 0.085 deg when written
 }
 
 }  // namespace

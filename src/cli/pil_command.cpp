@@ -107,10 +107,28 @@ Action define_pil_command(CLI::App& command) {
   command.add_option("--csv", options->recording.csv, "Write the plant's own quantities, a row per tick, to FILE")
       ->type_name("FILE");
   command.add_option("--plot", options->recording.plot, "The same as an SVG plot, a panel per unit")->type_name("FILE");
-  command.add_option("--mdf", options->recording.mdf, "The same as an MDF 4 file of one group")->type_name("FILE");
+  command
+      .add_option("--mdf", options->recording.mdf,
+                  "The same as an MDF 4 file, streamed: a group of the plant's quantities, and one per event of "
+                  "--signal")
+      ->type_name("FILE");
+  command
+      .add_option("--signal", options->firmware_signals.signals,
+                  "A firmware signal to record into --mdf by XCP through the bridge, sampled on EVENT (default "
+                  "--event); repeatable")
+      ->type_name("NAME[@EVENT]");
+  command.add_option("--event", options->firmware_signals.event, "The event of a --signal without @EVENT")
+      ->type_name("EVENT");
+  command.add_option("--a2l", options->firmware_signals.a2l_file, "The firmware's A2L, for --signal")
+      ->type_name("FILE")
+      ->check(CLI::ExistingFile);
   command.add_option("--console", options->console, "Write every line of the firmware's console to FILE")
       ->type_name("FILE");
   command.get_option("--bridge")->excludes("--no-bridge");
+  // The firmware's signals go into the MDF file, reached by XCP through the bridge and named by the A2L.
+  command.get_option("--signal")->needs("--mdf")->needs("--a2l")->excludes("--no-bridge");
+  command.get_option("--event")->needs("--signal");
+  command.get_option("--a2l")->needs("--signal");
   return [options](Streams streams) {
     PilOptions chosen = *options;
     chosen.xcp = normalised(chosen.xcp);

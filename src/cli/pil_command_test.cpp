@@ -41,6 +41,8 @@ class TemporaryFile {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+const std::string balbot_a2l = DUET_SOURCE_DIR "/apps/balbot/generated/balbot.a2l";
+
 TEST(PilCommand, BadCommandLinesSayWhatIsWrong) {
   const TemporaryFile firmware{"image.elf", ""};
   const auto usage_error = [](const std::vector<std::string>& arguments, const std::string& message) {
@@ -60,6 +62,65 @@ TEST(PilCommand, BadCommandLinesSayWhatIsWrong) {
   usage_error({"pil", firmware.path(), "--icount-shift", "11"}, "--icount-shift");
   usage_error({"pil", firmware.path(), "--no-bridge", "--bridge", "duet-bridge"}, "--no-bridge excludes --bridge");
   usage_error({"pil", firmware.path(), "--seed", "many"}, "--seed");
+  // The firmware's signals go into the MDF file, by XCP through the bridge, named by the A2L.
+  usage_error({"pil", firmware.path(), "--signal", "theta", "--a2l", balbot_a2l}, "--signal requires --mdf");
+  usage_error({"pil", firmware.path(), "--signal", "theta", "--mdf", "run.mf4"}, "--signal requires --a2l");
+  usage_error({"pil", firmware.path(), "--signal", "theta", "--mdf", "run.mf4", "--a2l", balbot_a2l, "--no-bridge"},
+              "--no-bridge excludes --signal");
+  usage_error({"pil", firmware.path(), "--event", "rate 1"}, "--event requires --signal");
+  usage_error({"pil", firmware.path(), "--signal", "theta", "--mdf", "run.mf4", "--a2l", "/nonexistent/a.a2l"},
+              "File does not exist: /nonexistent/a.a2l");
+}
+
+TEST(PilCommand, FirmwareSignalsTheA2lDoesNotHaveAreRefusedBeforeTheRun) {
+  const TemporaryFile firmware{"image.elf", ""};
+  const TemporaryFile mdf{"refused.mf4", ""};
+  const auto refused = [&](const std::vector<std::string>& signal, const std::string& message) {
+    std::vector<std::string> arguments{"pil",   firmware.path(), "--qemu", DUET_FAKE_QEMU,
+                                       "--mdf", mdf.path(),      "--a2l",  balbot_a2l};
+    arguments.insert(arguments.end(), signal.begin(), signal.end());
+    const Outcome outcome = run(arguments);
+    EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+    EXPECT_EQ(outcome.err, "duet pil: " + message + "\n");
+    EXPECT_EQ(outcome.out, "");  // nothing ran
+  };
+  refused({"--signal", "thetta@rate 1"}, "'thetta' is neither a MEASUREMENT nor a CHARACTERISTIC in the A2L");
+  refused({"--signal", "theta@rate 3"}, "'rate 3' is no event in the A2L (give its name or number)");
+  refused({"--signal", "theta"}, "--signal 'theta': give NAME@EVENT, or --event for all");
+  refused({"--signal", "theta", "--event", "fast"}, "'fast' is no event in the A2L (give its name or number)");
+}
+
+// A firmware that never answers XCP (the stand-in for QEMU has no XCP slave): the run fails and says so, and the
+// MDF file holds the plant's rows, finalised, and the event's group without samples.
+TEST(PilCommand, AFirmwareThatDoesNotAnswerXcpFailsTheRunAndKeepsThePlantsRows) {
+  const TemporaryFile firmware{"image.elf", ""};
+  const TemporaryFile mdf{"silent.mf4", ""};
+  const Outcome outcome =
+      run({"pil",   firmware.path(), "--qemu",      DUET_FAKE_QEMU, "--bridge",    DUET_BRIDGE_PROGRAM,
+           "--xcp", "127.0.0.1:0",   "--websocket", "127.0.0.1:0",  "--lock-step", "--duration",
+           "0.3",   "--mdf",         mdf.path(),    "--a2l",        balbot_a2l,    "--signal",
+           "theta", "--signal",      "y@rate 10",   "--event",      "rate 1"});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_TRUE(contains(outcome.err,
+                       "duet pil: recording the firmware's signals: the run ended before the firmware answered XCP on "
+                       "tcp://127.0.0.1:"))
+      << outcome.err;
+  EXPECT_TRUE(contains(outcome.out,
+                       "  daq       recorded 0 samples of 1 signals on event 'rate 1', 0 samples of 1 signals on "
+                       "event 'rate 10'\n"))
+      << outcome.out;
+  auto reader = mdf4::Reader::open(mdf.path());
+  ASSERT_TRUE(reader.ok()) << reader.error();
+  const mdf4::FileInfo& info = reader.value().info();
+  EXPECT_TRUE(info.finalised);
+  ASSERT_EQ(info.groups.size(), 3U);
+  EXPECT_EQ(info.groups[0].name, "every tick");
+  EXPECT_EQ(info.groups[0].samples, 300U);
+  EXPECT_EQ(info.groups[1].name, "rate 1");
+  EXPECT_EQ(info.groups[1].channels[1].name, "theta");
+  EXPECT_EQ(info.groups[1].samples, 0U);
+  EXPECT_EQ(info.groups[2].name, "rate 10");
+  EXPECT_EQ(info.groups[2].samples, 0U);
 }
 
 TEST(PilCommand, APlantThatCannotBeMadeOrFilesThatCannotBeWritten) {

@@ -8,7 +8,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <ostream>
+#include <span>
 #include <string_view>
 #include <thread>
 #include <vector>
@@ -108,7 +110,7 @@ BridgeStart wait_until_listening(ChildProcess& bridge) {
 }
 
 // Why watching the run ended.
-enum class Ending : std::uint8_t { signal, qemu_exited, plant_failed, qemu_lingered, bridge_exited };
+enum class Ending : std::uint8_t { signal, qemu_exited, plant_failed, qemu_lingered, bridge_exited, recording_failed };
 
 // Watches the children and the plant session, handling their output, until something ends the run; then stops
 // everything in order.
@@ -128,7 +130,8 @@ class Supervisor {
     make_non_blocking(qemu_.errors_fd());
   }
 
-  Ending watch(StopSignals& signals) {
+  // `recording`: the firmware's signals' (--signal), whose failure ends the run too; may be null.
+  Ending watch(StopSignals& signals, const FirmwareRecording* recording) {
     std::optional<Clock::time_point> plant_finished;
     for (;;) {
       const auto unless_ended = [](int fd, const LineSplitter& lines) { return lines.ended() ? -1 : fd; };
@@ -145,6 +148,7 @@ class Supervisor {
       if (signals.received()) return Ending::signal;
       if (qemu_.exit_code()) return Ending::qemu_exited;
       if (bridge_ != nullptr && bridge_->exit_code()) return Ending::bridge_exited;
+      if (recording != nullptr && recording->failed()) return Ending::recording_failed;
       if (session_.finished()) {
         // The emulator usually ends with the session (the firmware said BYE, or it died mid-tick): give it a
         // moment to end by itself and say how (its exit code), then stop it.
@@ -288,6 +292,7 @@ bool judge(Ending ending, const Supervisor& supervisor, const PlantSession::Outc
           << "); what it said:\n"
           << supervisor.bridge_output();
       return false;
+    case Ending::recording_failed: return false;  // the recording's failure is said with its file
   }
   return false;
 }
@@ -320,6 +325,19 @@ PilRun summarise(const PilOptions& options, const ChosenPlant& chosen, const Rec
   return run;
 }
 
+// The run's MDF file (--mdf): the plant's rows and the firmware's DAQ samples streamed into it as they come.
+Result<std::unique_ptr<mdf4_recording::PlantAndDaqFile>> create_mdf(const PilOptions& options,
+                                                                    const model::Recording& plant,
+                                                                    const FirmwareRecording* firmware) {
+  std::string comment = "duet pil: plant " + options.plant.name + " under " + options.firmware;
+  if (firmware != nullptr) comment += ", its signals by XCP (A2L " + options.firmware_signals.a2l_file + ")";
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return mdf4_recording::PlantAndDaqFile::create(
+      options.recording.mdf, {.names = plant.names, .units = plant.units},
+      firmware != nullptr ? firmware->groups() : std::vector<mdf4_recording::DaqGroup>{}, comment,
+      std::chrono::duration_cast<std::chrono::nanoseconds>(now).count());
+}
+
 }  // namespace
 
 ExitCode run_pil(const PilOptions& options, Streams streams) {
@@ -329,6 +347,12 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   };
   auto chosen = choose_plant(options.plant);
   if (!chosen) return fail(chosen.error());
+  std::unique_ptr<FirmwareRecording> firmware_recording;
+  if (!options.firmware_signals.signals.empty()) {
+    auto prepared = FirmwareRecording::prepare(options.firmware_signals, streams.err);
+    if (!prepared) return fail(prepared.error());
+    firmware_recording = std::move(prepared).value();
+  }
   if (Status created = create_recording_files(options.recording); !created) return fail(created.error());
   std::ofstream console;
   if (!options.console.empty()) {
@@ -341,8 +365,16 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   if (!pipes) return fail("the plant: " + pipes.error());
   auto control = PlantControlEndpoint::open(chosen.value(), options.plant.name, options.plant_control);
   if (!control) return fail(control.error());
-  RecordingPlant plant{control.value().controlled(chosen.value().make()), true};  // always: the summary's tilt
-
+  std::unique_ptr<mdf4_recording::PlantAndDaqFile> mdf;  // made before the session, which streams into it
+  RecordingPlant plant{control.value().controlled(chosen.value().make()), true,  // always: the summary's tilt
+                       [&mdf](double time_s, std::span<const double> row) {
+                         if (mdf) mdf->append_plant(time_s, row);
+                       }};
+  if (!options.recording.mdf.empty()) {
+    auto created = create_mdf(options, plant.recording(), firmware_recording.get());
+    if (!created) return fail(created.error());
+    mdf = std::move(created).value();
+  }
   StopSignals signals;
   const QemuSetup qemu_setup{options.qemu, options.firmware, options.icount_shift, options.duration_s,
                              folder.value().path()};
@@ -374,10 +406,14 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   const MachineLoadMeter machine_load;
   PlantSession session{std::move(pipes).value(), plant, {.paced = !options.lock_step}, 10s};
   print_how_to_connect(listening, folder.value().path(), control.value(), streams.out);
+  if (firmware_recording) firmware_recording->start(listening.xcp, *mdf);
 
   Supervisor supervisor{streams, console, qemu.value(), bridge ? &*bridge : nullptr, session, std::move(bridge_start)};
-  const Ending ending = supervisor.watch(signals);
+  const Ending ending = supervisor.watch(signals, firmware_recording.get());
   const bool session_ended_first = session.finished();
+  // Before the children stop: after a signal the firmware still runs, and DAQ is stopped on it.
+  Status firmware_recorded = done();
+  if (firmware_recording) firmware_recorded = firmware_recording->stop(ending == Ending::signal);
   supervisor.stop_children();
   session.cancel();
   const PlantSession::Outcome outcome = session.join();
@@ -386,12 +422,20 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   const bool went_well = judge(ending, supervisor, outcome, session_ended_first, streams.out, streams.err);
   PilRun run = summarise(options, chosen.value(), plant, control.value(), supervisor, outcome, run_wall_s);
   run.machine = machine_load.finish(run_wall_s);
+  if (firmware_recording) run.daq = firmware_recording->summary();
   streams.out << format_summary(run) << std::flush;
 
-  const Status written = write_recording_files(plant.recording(), options.recording,
+  if (!firmware_recorded)
+    streams.err << prefix << "recording the firmware's signals: " << firmware_recorded.error() << '\n';
+  Status mdf_written = done();
+  if (mdf) mdf_written = mdf->finalise();
+  if (!mdf_written) streams.err << prefix << mdf_written.error() << '\n';
+  RecordingFiles at_the_end = options.recording;
+  at_the_end.mdf.clear();  // streamed
+  const Status written = write_recording_files(plant.recording(), at_the_end,
                                                "plant " + options.plant.name + " under " + options.firmware);
   if (!written) streams.err << prefix << written.error() << '\n';
-  return went_well && written ? ExitCode::success : ExitCode::failure;
+  return went_well && firmware_recorded && mdf_written && written ? ExitCode::success : ExitCode::failure;
 }
 
 }  // namespace duet::cli

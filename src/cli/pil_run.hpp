@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "pil_firmware_recording.hpp"
 #include "plant_choice.hpp"
 #include "recording_plant.hpp"
 #include "subcommand.hpp"
@@ -25,8 +26,9 @@ struct PilOptions {
   bool bridge = true;
   std::string bridge_program;  // empty: default_bridge()
   std::string qemu = "qemu-system-arm";
-  RecordingFiles recording;  // the plant's observables per tick
-  std::string console;       // every line of the firmware's console, if given
+  RecordingFiles recording;          // the plant's observables per tick
+  FirmwareSignals firmware_signals;  // recorded into recording.mdf over XCP, if any
+  std::string console;               // every line of the firmware's console, if given
 };
 
 // Blocks until the run is over. SIGINT and SIGTERM end it in order while it runs. Exit codes: success when the

@@ -176,6 +176,7 @@ void xcp_lines(const PilRun& run, std::ostream& out) {
         << xcp.frames_to_master << " to the master (" << xcp.bytes_to_master << " bytes), " << xcp.daq_frames_dropped
         << " DAQ frames dropped, " << xcp.masters_served << " masters served\n";
   }
+  if (!run.daq.empty()) out << "  daq       " << run.daq << '\n';
 }
 
 // "push force_n=5 duration_s=0.05 at 12.345 s": numbers that read back as the same doubles.

@@ -47,6 +47,7 @@ struct PilRun {
   FirmwareReport firmware;
   bool bridge = true;                  // false: --no-bridge
   std::optional<XcpTraffic> xcp;       // the bridge's counters, when it said them
+  std::string daq;                     // what --signal recorded ("recorded N samples of ..."); empty: no --signal
   std::optional<MachineLoad> machine;  // what the rest of the machine did meanwhile
   // What the dashboards pushed and restarted, with the model times, and what the plant offers (for the names).
   std::vector<plant::AppliedDisturbance> disturbances;

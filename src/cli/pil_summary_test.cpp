@@ -246,5 +246,16 @@ TEST(PilSummary, WhatIsMissingIsSaid) {
   EXPECT_NE(format_summary(run).find("  xcp       the bridge did not report its counters\n"), std::string::npos);
 }
 
+// With --signal, what the firmware's recording got, after the bridge's counters (without it, no line: above).
+TEST(PilSummary, TheFirmwaresSignalsRecorded) {
+  PilRun run;
+  run.daq = "recorded 9911 samples of 1 signals on event 'rate 1' (0 overloads, 0 lost packets, 0 discarded)";
+  EXPECT_TRUE(
+      format_summary(run).ends_with("  xcp       the bridge did not report its counters\n"
+                                    "  daq       recorded 9911 samples of 1 signals on event 'rate 1' (0 "
+                                    "overloads, 0 lost packets, 0 discarded)\n"))
+      << format_summary(run);
+}
+
 }  // namespace
 }  // namespace duet::cli

@@ -8,9 +8,10 @@
 
 namespace duet::cli {
 
-RecordingPlant::RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record)
+RecordingPlant::RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record, RowSink sink)
     : behind_(std::move(behind)),
       record_(record),
+      sink_(std::move(sink)),
       observables_(behind_->observables()),
       now_(observables_.size()),
       most_rows_(100'000'000 / (observables_.size() + 1)) {
@@ -24,11 +25,12 @@ RecordingPlant::RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record
 void RecordingPlant::advance(double time_s, const plant::RaiseInterrupt& raise) {
   behind_->advance(time_s, raise);
   if (!record_) return;
+  behind_->observe(now_);
+  if (sink_) sink_(time_s, now_);
   if (recording_.time_s.size() >= most_rows_) {
     truncated_ = true;
     return;
   }
-  behind_->observe(now_);
   recording_.time_s.push_back(time_s);
   for (std::size_t k = 0; k < now_.size(); ++k) recording_.columns[k].push_back(now_[k]);
 }

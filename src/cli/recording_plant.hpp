@@ -4,6 +4,7 @@
 // recording is written to (--csv, --plot, --mdf of `duet plant serve` and `duet pil`).
 
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -18,8 +19,11 @@ namespace duet::cli {
 
 class RecordingPlant : public plant::Plant {
  public:
-  // Without `record` it only passes the calls on.
-  RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record);
+  // Each row as it is recorded (`duet pil` streams them into its MDF file), in the session's thread.
+  using RowSink = std::function<void(double time_s, std::span<const double> row)>;
+
+  // Without `record` it only passes the calls on. `sink`, if any, takes every row, also those past what is kept.
+  RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record, RowSink sink = {});
 
   void advance(double time_s, const plant::RaiseInterrupt& raise) override;
   void write(std::string_view resource, std::span<const double> values) override { behind_->write(resource, values); }
@@ -35,6 +39,7 @@ class RecordingPlant : public plant::Plant {
  private:
   std::unique_ptr<plant::Plant> behind_;
   bool record_;
+  RowSink sink_;
   std::vector<Observable> observables_;
   std::vector<double> now_;
   model::Recording recording_;

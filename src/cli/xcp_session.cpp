@@ -48,16 +48,22 @@ Result<Session> open_session(const XcpOptions& options, bool needs_master, std::
   } else {
     return Failure{"no slave to talk to: give --connect tcp://host:port or --a2l FILE"};
   }
-  const std::chrono::milliseconds timeout{options.timeout_ms};
-  auto channel = MasterChannel::open(endpoint, timeout);
+  if (Status connected = connect_master(session, endpoint, std::chrono::milliseconds{options.timeout_ms}); !connected) {
+    return Failure{connected.error()};
+  }
+  return session;
+}
+
+Status connect_master(Session& session, const Endpoint& slave, std::chrono::milliseconds timeout) {
+  auto channel = MasterChannel::open(slave, timeout);
   if (!channel) return Failure{channel.error()};
   session.master = std::make_unique<Master>(std::move(channel).value(), timeout);
-  session.slave = endpoint;
+  session.slave = slave;
   if (auto connected = session.master->connect(); !connected) return Failure{connected.error()};
   if (session.a2l) {
     if (Status same = check_epk(*session.master, *session.a2l); !same) return Failure{same.error()};
   }
-  return session;
+  return done();
 }
 
 Result<const Variable*> variable_named(const Session& session, const std::string& name) {

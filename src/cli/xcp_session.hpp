@@ -3,6 +3,7 @@
 // (the A2L and a connected master), names looked up in the A2L, parameter writes checked before they are sent, and
 // failures reported as "duet xcp: ...".
 
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -48,6 +49,11 @@ struct Session {
 // Reads --a2l if given and, if `needs_master`, connects to --connect or else to the A2L's transport.
 // What the A2L reader left out of the file is said on `warnings`, a line each.
 [[nodiscard]] Result<Session> open_session(const XcpOptions& options, bool needs_master, std::ostream& warnings);
+
+// Connects a master to `slave`, each command answered within `timeout`, and checks the slave's EPK against the
+// session's A2L if it has one.
+[[nodiscard]] Status connect_master(Session& session, const xcp::host::Endpoint& slave,
+                                    std::chrono::milliseconds timeout);
 
 // A MEASUREMENT or CHARACTERISTIC of the session's A2L by name.
 [[nodiscard]] Result<const xcp::host::Variable*> variable_named(const Session& session, const std::string& name);
