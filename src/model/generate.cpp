@@ -288,11 +288,11 @@ class FileWriter {
     text += "void initialize() {\n" + storage_prologue() +
             (per_instance_ ? "  Parameters& parameters = instance->parameters;\n" : "");
     text += "  parameter_page = reinterpret_cast<const std::uint8_t*>(&parameters);\n";
-    text += generator_.state_resets();
-    std::string constants;
-    for (const std::size_t block : program_.initial_outputs) constants += generator_.output_phase(block);
+    // The states' initial values and the constant outputs, which may both be parameters.
+    std::string start = generator_.state_resets();
+    for (const std::size_t block : program_.initial_outputs) start += generator_.output_phase(block);
     const std::string read_page = "  const Parameters& p = parameters_in_use();\n";
-    text += (reads_parameters(constants) ? read_page : "") + constants;
+    text += (reads_parameters(start) ? read_page : "") + start;
     text += "}\n\nvoid terminate() {}\n";
     for (const ProgramTask& task : program_.tasks) {
       const auto index = static_cast<std::size_t>(&task - program_.tasks.data());
