@@ -5,14 +5,13 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <string>
 
 #include "duet/fmi/archive.hpp"
 #include "duet/fmi/model_description_reader.hpp"
 #include "duet/model/model_file.hpp"
 #include "duet/support/temporary_folder.hpp"
+#include "duet/support/text_file.hpp"
 
 namespace duet::fmu_export {
 namespace {
@@ -156,8 +155,8 @@ void drive_with_the_c_host(fmi::FmiVersion version) {
       reference(plant, "gpio:LED0") + reference(plant, "adc:ADC1/6") + " > '" + (folder.path() / "host.txt").string() +
       "'";
   const int status = std::system(host.c_str());
-  std::ifstream output{folder.path() / "host.txt"};
-  const std::string text{std::istreambuf_iterator<char>{output}, {}};
+  const auto output = read_text_file((folder.path() / "host.txt").string());
+  const std::string text = output.ok() ? output.value() : "(no output: " + output.error() + ")";
   EXPECT_EQ(status, 0) << text;
   EXPECT_THAT(text, HasSubstr("passed: 0 failed checks"));
 }
