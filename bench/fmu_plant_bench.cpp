@@ -54,10 +54,13 @@ void fmu_lag_step(benchmark::State& state, const std::string& fmu) {
   duet::fmu_plant::FmuMapping mapping{.file = "bench",
                                       .inputs = {{.variable = "u", .resource = "pwm:TIM1/1"}},
                                       .outputs = {{.variable = "y", .resource = "adc:ADC1/6"}}};
-  auto plant = duet::fmu_plant::FmuPlant::load(
-      {.fmu = std::string{DUET_TEST_FMU_DIR} + "/" + fmu, .mapping = mapping, .step_s = step_s});
+  auto plant = duet::fmu_plant::FmuPlant::load({.fmu = std::string{DUET_TEST_FMU_DIR} + "/" + fmu, .mapping = mapping});
   if (!plant) {
     state.SkipWithError(plant.error().c_str());
+    return;
+  }
+  if (const duet::Status started = plant.value()->start(step_s); !started) {
+    state.SkipWithError(started.error().c_str());
     return;
   }
   drive(state, *plant.value());

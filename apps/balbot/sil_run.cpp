@@ -49,6 +49,7 @@ Result<SilResult> run_sil(plant::Plant& plant, const SilOptions& options) {
   // A fresh start: what a reset gives the firmware on the board (zeroed RAM, the parameters' initial values).
   balbot::signals = balbot::Signals{};
   balbot::parameters = balbot::reference_parameters;
+  if (Status started = plant.start(period_s); !started) return Failure{started.error()};
   const HardwareConnection connection{plant};
   host::LockStepPort port{description};
   port.on_task_finished = options.task_finished;

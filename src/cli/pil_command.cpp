@@ -64,7 +64,7 @@ Action define_pil_command(CLI::App& command) {
   command.add_option("--plant", options->plant.name, "The plant: " + plant_list())
       ->capture_default_str()
       ->type_name("NAME");
-  add_scenario_and_seed_options(command, options->plant);
+  add_plant_options(command, options->plant);
   command
       .add_option_function<double>(
           "--duration", [options](const double& seconds) { options->duration_s = seconds; },
@@ -130,6 +130,10 @@ Action define_pil_command(CLI::App& command) {
   command.get_option("--event")->needs("--signal");
   command.get_option("--a2l")->needs("--signal");
   return [options](Streams streams) {
+    if (auto misuse = plant_options_misuse(options->plant)) {
+      streams.err << "duet pil: " << *misuse << '\n';
+      return ExitCode::usage;
+    }
     PilOptions chosen = *options;
     chosen.xcp = normalised(chosen.xcp);
     chosen.websocket = normalised(chosen.websocket);

@@ -225,6 +225,35 @@ TEST(PilCommand, ALockStepRunThatEndsByItself) {
   EXPECT_TRUE(lines.value().ends_with("duet-end reason=final_tick ticks=500 overruns=0\n")) << lines.value();
 }
 
+// An imported FMU as the plant (issue #25): initialised when the firmware's HELLO gives the base period, stepped a
+// tick after a tick, recorded, and its request to stop ends the run at that tick, which is no failure.
+TEST(PilCommand, AnFmuAsThePlantStepsWithTheFirmwareAndEndsTheRunWhenItAsksTo) {
+  const TemporaryFile firmware{"image.elf", ""};
+  const TemporaryFile csv{"fmu.csv", ""};
+  const TemporaryFile mapping{"stop.yaml",
+                              "outputs:\n  - {variable: y, resource: \"adc:ADC1/6\"}\nset:\n  stop_at: 0.05\n"};
+  const std::string fmu = std::string{DUET_TEST_FMU_DIR} + "/Terminating_fmi2.fmu";
+  const Outcome outcome = run({"pil", firmware.path(), "--qemu", DUET_FAKE_QEMU, "--no-bridge", "--lock-step",
+                               "--duration", "0.5", "--plant", fmu, "--connect", mapping.path(), "--csv", csv.path()});
+  EXPECT_EQ(outcome.exit_code, ExitCode::success) << outcome.err << outcome.out;
+  EXPECT_TRUE(contains(outcome.out, ", plant " + fmu + ", lock-step\n")) << outcome.out;
+  EXPECT_TRUE(contains(outcome.out,
+                       "duet pil: the plant asked to stop at t = 0.05 s: Terminating asked to stop at "
+                       "t = 0.05 s\n"))
+      << outcome.out;
+  auto recorded = plot::read_csv(read_text_file(csv.path()).value(), csv.path());
+  ASSERT_TRUE(recorded.ok()) << recorded.error();
+  ASSERT_EQ(recorded.value().series.size(), 1U);
+  EXPECT_EQ(recorded.value().series[0].name, "y");
+  ASSERT_EQ(recorded.value().time.size(), 50U);  // ticks 1 to 50 ms, the last the one that asked
+  for (std::size_t row = 0; row < recorded.value().time.size(); ++row)
+    EXPECT_NEAR(recorded.value().series[0].values[row], recorded.value().time[row], 1e-12) << row;  // y = time
+
+  const Outcome unmapped = run({"pil", firmware.path(), "--qemu", DUET_FAKE_QEMU, "--plant", fmu});
+  EXPECT_EQ(unmapped.exit_code, ExitCode::usage);
+  EXPECT_EQ(unmapped.err, "duet pil: an FMU as the plant needs --connect MAPPING.yaml\n");
+}
+
 TEST(PilCommand, RealTimeTakesTheRunsDuration) {
   const TemporaryFile firmware{"image.elf", ""};
   const auto start = std::chrono::steady_clock::now();

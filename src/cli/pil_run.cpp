@@ -277,6 +277,11 @@ bool judge(Ending ending, const Supervisor& supervisor, const PlantSession::Outc
       }
       out << "duet pil: the firmware ended" << (report.end ? " (" + report.end->reason + ")" : std::string{})
           << " with exit code " << code << '\n';
+      // The plant ended the run (an FMU asked to stop); the firmware learnt of it as a link error.
+      if (!session.summary.plant_stop.empty()) {
+        out << "duet pil: " << session.summary.plant_stop << '\n';
+        return true;
+      }
       if (code != 0) {
         err << prefix << "the firmware failed: exit code " << code << '\n';
         return false;
@@ -345,7 +350,7 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
     streams.err << prefix << message << '\n';
     return ExitCode::failure;
   };
-  auto chosen = choose_plant(options.plant);
+  auto chosen = choose_plant(options.plant, log_lines_to(streams.err));
   if (!chosen) return fail(chosen.error());
   std::unique_ptr<FirmwareRecording> firmware_recording;
   if (!options.firmware_signals.signals.empty()) {
@@ -366,7 +371,9 @@ ExitCode run_pil(const PilOptions& options, Streams streams) {
   auto control = PlantControlEndpoint::open(chosen.value(), options.plant.name, options.plant_control);
   if (!control) return fail(control.error());
   std::unique_ptr<mdf4_recording::PlantAndDaqFile> mdf;  // made before the session, which streams into it
-  RecordingPlant plant{control.value().controlled(chosen.value().make()), true,  // always: the summary's tilt
+  auto made = chosen.value().make();
+  if (!made) return fail(made.error());
+  RecordingPlant plant{control.value().controlled(std::move(made).value()), true,  // always: the summary's tilt
                        [&mdf](double time_s, std::span<const double> row) {
                          if (mdf) mdf->append_plant(time_s, row);
                        }};

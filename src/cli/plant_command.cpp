@@ -31,7 +31,10 @@ std::string describe(const link::ServeSummary& summary) {
   return std::to_string(summary.ticks) + " ticks, " + std::to_string(summary.interrupts) + " interrupts, " +
          std::to_string(summary.writes) + " writes, " + std::to_string(summary.reads) + " reads (" +
          (lock_step ? "lock-step" : "real time") + ", base period " +
-         std::to_string(summary.hello.base_period_ns / 1000) + " us)" + (summary.said_bye ? "" : ", ended without BYE");
+         std::to_string(summary.hello.base_period_ns / 1000) + " us)" +
+         (!summary.plant_stop.empty() ? "; " + summary.plant_stop
+          : summary.said_bye          ? ""
+                                      : ", ended without BYE");
 }
 
 constexpr std::string_view prefix = "duet plant serve: ";
@@ -50,7 +53,7 @@ bool write_recording(const ServeOptions& options, const RecordingPlant& plant, c
 }
 
 ExitCode serve_plant(const ServeOptions& options, Streams streams) {
-  auto chosen = choose_plant(options.plant);
+  auto chosen = choose_plant(options.plant, log_lines_to(streams.err));
   if (!chosen) {
     streams.err << prefix << chosen.error() << '\n';
     return ExitCode::failure;
@@ -90,7 +93,12 @@ ExitCode serve_plant(const ServeOptions& options, Streams streams) {
       streams.err << prefix << accepted.error() << '\n';
       return ExitCode::failure;
     }
-    RecordingPlant plant{control.value().controlled(chosen.value().make()), options.recording.any()};
+    auto made = chosen.value().make();
+    if (!made) {
+      streams.err << prefix << made.error() << '\n';
+      return ExitCode::failure;
+    }
+    RecordingPlant plant{control.value().controlled(std::move(made).value()), options.recording.any()};
     auto served = link::serve(plant, *accepted.value().stream);
     if (served) {
       streams.out << "served " << accepted.value().peer << ": " << describe(served.value()) << std::endl;
@@ -111,7 +119,7 @@ Action define_plant_command(CLI::App& command) {
   CLI::App* serve = command.add_subcommand(
       "serve", "Serve a simulated plant over the virtual-hardware link to firmware that connects over TCP");
   serve->add_option("name", options->plant.name, "The plant: " + plant_list())->required()->type_name("NAME");
-  add_scenario_and_seed_options(*serve, options->plant);
+  add_plant_options(*serve, options->plant);
   serve
       ->add_option("--listen", options->listen,
                    "HOST:PORT to listen on; port 0 takes a free port (the line printed says which)")
@@ -138,7 +146,13 @@ Action define_plant_command(CLI::App& command) {
       ->capture_default_str()
       ->type_name("HOST:PORT")
       ->check(host_port_validator());
-  return [options](Streams streams) { return serve_plant(*options, streams); };
+  return [options](Streams streams) {
+    if (auto misuse = plant_options_misuse(options->plant)) {
+      streams.err << prefix << *misuse << '\n';
+      return ExitCode::usage;
+    }
+    return serve_plant(*options, streams);
+  };
 }
 
 }  // namespace duet::cli

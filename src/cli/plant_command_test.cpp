@@ -17,6 +17,10 @@
 #include "duet/link/remote_plant.hpp"
 #include "duet/link/stream.hpp"
 #include "duet/link/tcp.hpp"
+#include "duet/model/model_file.hpp"
+#include "duet/model/model_plant.hpp"
+#include "duet/model/program.hpp"
+#include "duet/model/simulation.hpp"
 #include "duet/plot/csv.hpp"
 #include "duet/support/text_file.hpp"
 #include "run_for_test.hpp"
@@ -283,6 +287,75 @@ TEST(PlantCommand, AFirmwareThatBreaksTheLinkFailsTheSession) {
   EXPECT_TRUE(error.ends_with(": the firmware sent a bad frame (unknown frame kind 0x42) while awaiting HELLO"))
       << error;
   EXPECT_EQ(program.wait(), 1);
+}
+
+// The thermostat (apps/thermostat) in this process for 5 s, lock-step, against `plant`: its signals as CSV.
+std::string thermostat_against(plant::Plant& plant) {
+  auto model = model::load_model(std::string{DUET_SOURCE_DIR} + "/apps/thermostat/thermostat.yaml");
+  EXPECT_TRUE(model) << model.error();
+  if (!model) return {};
+  const model::ProgramBuild build = model::build_program(model.value());
+  EXPECT_TRUE(build.program);
+  if (!build.program) return {};
+  auto simulated = model::simulate(*build.program, plant, {.duration_s = 5, .record_plant = false});
+  EXPECT_TRUE(simulated) << simulated.error();
+  return simulated ? model::to_csv(simulated.value().recording) : std::string{};
+}
+
+// Issue #25, "the SIL paths that take a plant": the heater exported as an FMU and served by `duet plant serve`
+// closes the thermostat's loop over the link bit for bit as the heater model does in the thermostat's own process.
+// The FMU is initialised when the firmware's HELLO gives the base period (10 ms), and its log is the server's.
+TEST(PlantCommand, AnFmuServedOverTheLinkClosesTheSameLoopAsThePlantModelInProcess) {
+  const std::string examples = std::string{DUET_SOURCE_DIR} + "/apps/thermostat/";
+  auto heater = model::ModelPlant::load(examples + "heater.yaml");
+  ASSERT_TRUE(heater) << heater.error();
+  const std::string native = thermostat_against(*heater.value());
+  ASSERT_NE(native.find(",0\n"), std::string::npos);  // the heating switches: a loop worth comparing
+
+  const std::string fmu =
+      (std::filesystem::temp_directory_path() / ("duet_served_heater_" + std::to_string(::getpid()) + ".fmu")).string();
+  const Outcome exported = run({"fmu", "export", examples + "heater.yaml", "-o", fmu});
+  ASSERT_EQ(exported.exit_code, ExitCode::success) << exported.err;
+  Child program{{"plant", "serve", fmu, "--connect", examples + "heater.connect.yaml", "--listen", ":0", "--once"}};
+  ASSERT_TRUE(program.started());
+  auto stream = link::connect_tcp(listening_address(program, fmu), 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 10'000'000});
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  EXPECT_EQ(thermostat_against(*connected.value()), native);
+  ASSERT_TRUE(connected.value()->ok()) << connected.value()->error();
+  EXPECT_TRUE(connected.value()->close().ok());
+  EXPECT_TRUE(
+      program.line().ends_with(": 501 ticks, 0 interrupts, 501 writes, 501 reads (lock-step, base period "
+                               "10000 us)"));
+  EXPECT_EQ(program.wait(), 0);
+  std::filesystem::remove(fmu);
+}
+
+// A plant that asks to stop ends the session at that tick: the firmware is told (ERROR, the only ending a plant
+// can give a tick), and the server says why and counts it no failure.
+TEST(PlantCommand, AnFmuThatAsksToStopEndsTheSession) {
+  const std::string mapping =
+      (std::filesystem::temp_directory_path() / ("duet_stop_" + std::to_string(::getpid()) + ".yaml")).string();
+  std::ofstream{mapping} << "outputs:\n  - {variable: y, resource: \"adc:ADC1/6\"}\nset:\n  stop_at: 0.005\n";
+  Child program{{"plant", "serve", std::string{DUET_TEST_FMU_DIR} + "/Terminating_fmi3.fmu", "--connect", mapping,
+                 "--listen", ":0", "--once"}};
+  ASSERT_TRUE(program.started());
+  auto stream =
+      link::connect_tcp(listening_address(program, std::string{DUET_TEST_FMU_DIR} + "/Terminating_fmi3.fmu"), 10s);
+  ASSERT_TRUE(stream.ok()) << stream.error();
+  auto connected = link::RemotePlant::connect(std::move(stream).value(), {link::LinkMode::lock_step, 1'000'000});
+  ASSERT_TRUE(connected.ok()) << connected.error();
+  link::RemotePlant& plant = *connected.value();
+  for (int tick = 0; tick <= 10 && plant.ok(); ++tick) plant.advance(tick * 0.001, {});
+  ASSERT_FALSE(plant.ok());
+  EXPECT_EQ(plant.ticks(), 6U);  // 0 to 5 ms, the last answered with ERROR
+  EXPECT_NE(plant.error().find("the plant asked to stop at t = 0.005 s: "), std::string::npos) << plant.error();
+  const std::string served = program.line();
+  EXPECT_TRUE(served.ends_with("; the plant asked to stop at t = 0.005 s: Terminating asked to stop at t = 0.005 s"))
+      << served;
+  EXPECT_EQ(program.wait(), 0);
+  std::filesystem::remove(mapping);
 }
 
 }  // namespace

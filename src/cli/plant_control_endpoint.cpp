@@ -7,8 +7,9 @@ namespace duet::cli {
 Result<PlantControlEndpoint> PlantControlEndpoint::open(const ChosenPlant& chosen, const std::string& plant_name,
                                                         const std::string& address) {
   PlantControlEndpoint endpoint;
-  const std::unique_ptr<plant::Plant> probe = chosen.make();
-  std::vector<plant::DisturbanceKind> offered = probe ? probe->disturbances() : std::vector<plant::DisturbanceKind>{};
+  auto probe = chosen.make();
+  if (!probe) return Failure{probe.error()};
+  std::vector<plant::DisturbanceKind> offered = probe.value()->disturbances();
   if (offered.empty()) return endpoint;
   auto host_port = link::parse_host_port(address);
   if (!host_port) return Failure{"--plant-control " + host_port.error()};

@@ -25,11 +25,13 @@ class RecordingPlant : public plant::Plant {
   // Without `record` it only passes the calls on. `sink`, if any, takes every row, also those past what is kept.
   RecordingPlant(std::unique_ptr<plant::Plant> behind, bool record, RowSink sink = {});
 
+  [[nodiscard]] Status start(double base_period_s) override { return behind_->start(base_period_s); }
   void advance(double time_s, const plant::RaiseInterrupt& raise) override;
   void write(std::string_view resource, std::span<const double> values) override { behind_->write(resource, values); }
   void read(std::string_view resource, std::span<double> values) override { behind_->read(resource, values); }
   [[nodiscard]] std::vector<Observable> observables() const override { return observables_; }
   void observe(std::span<double> values) const override { behind_->observe(values); }
+  [[nodiscard]] std::optional<Halt> halted() const override { return behind_->halted(); }
 
   // A row per TICK: `time_s` and a column per observable. Read it once the session is over (not thread-safe).
   [[nodiscard]] const model::Recording& recording() const { return recording_; }

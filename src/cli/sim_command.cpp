@@ -12,34 +12,28 @@
 #include <vector>
 
 #include "checked_model.hpp"
-#include "duet/fmu_plant/fmu_plant.hpp"
 #include "duet/mdf4_recording/recording_file.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
-#include "duet/model/simulation_plant.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/plot/figure.hpp"
+#include "plant_choice.hpp"
 
 namespace duet::cli {
 namespace {
 
 struct SimOptions {
   std::string file;
-  std::string plant = "none";
+  PlantChoice plant{.name = "none"};
   double duration_s = 1.0;
   std::vector<std::string> signals;
   std::string csv;
   std::string plot;
   std::string mdf;
   bool no_plot = false;
-  std::uint64_t seed = 1;
-  bool seed_given = false;
-  std::string scenario;
   std::vector<std::string> settings;  // NAME=VALUE or NAME=V1,V2,...
-  std::string connect;                // with an .fmu plant: the mapping file
-  std::vector<std::string> fmu_settings;
 };
 
 // A parameter's new value from the command line, as the model's parameter number and its elements.
@@ -85,21 +79,6 @@ Result<std::vector<Setting>> parse_settings(const model::Model& model, const std
   return result;
 }
 
-// An imported FMU as the plant, stepping at the model's base period; its log goes to stderr.
-Result<model::SimulationPlant> fmu_plant(const SimOptions& options, double base_period_s, Streams streams) {
-  auto mapping = fmu_plant::read_fmu_mapping(options.connect);
-  if (!mapping) return Failure{mapping.error()};
-  for (const std::string& setting : options.fmu_settings) {
-    if (auto added = fmu_plant::add_setting(mapping.value(), setting); !added) return Failure{added.error()};
-  }
-  auto plant = fmu_plant::FmuPlant::load({.fmu = options.plant,
-                                          .mapping = std::move(mapping).value(),
-                                          .step_s = base_period_s,
-                                          .log = [&err = streams.err](std::string_view line) { err << line << '\n'; }});
-  if (!plant) return Failure{plant.error()};
-  return model::SimulationPlant{std::move(plant).value(), {}};
-}
-
 bool write_file(const std::string& path, const std::string& text, Streams streams) {
   std::ofstream file{path};
   file << text;
@@ -110,15 +89,12 @@ bool write_file(const std::string& path, const std::string& text, Streams stream
 ExitCode run_sim(const SimOptions& options, Streams streams) {
   const auto checked = load_checked_model(options.file, streams.err);
   if (!checked) return ExitCode::failure;
-  auto plant = options.plant.ends_with(".fmu")
-                   ? fmu_plant(options, checked->program.model->base_period_us * 1e-6, streams)
-                   : model::make_simulation_plant(options.plant, options.scenario,
-                                                  options.seed_given ? std::optional{options.seed} : std::nullopt);
+  auto chosen = choose_plant(options.plant, log_lines_to(streams.err));
+  auto plant = chosen ? chosen.value().make() : Failure{chosen.error()};
   if (!plant) {
     streams.err << "duet sim: " << plant.error() << '\n';
     return ExitCode::failure;
   }
-  for (const std::string& warning : plant.value().warnings) streams.err << warning << '\n';
   auto settings = parse_settings(*checked->model, options.settings);
   if (!settings) {
     streams.err << "duet sim: " << settings.error() << '\n';
@@ -132,7 +108,7 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
         model.set_parameter(setting.parameter, k, setting.values[k]);
     }
   };
-  auto simulated = model::simulate(checked->program, *plant.value().plant, simulation);
+  auto simulated = model::simulate(checked->program, *plant.value(), simulation);
   if (!simulated) {
     streams.err << "duet sim: " << simulated.error() << '\n';
     return ExitCode::failure;
@@ -150,7 +126,7 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
     const Status written = mdf4_recording::write_recording_file(
         options.mdf, recording,
         {.group = group,
-         .comment = "duet sim " + options.file + " against plant '" + options.plant + "'",
+         .comment = "duet sim " + options.file + " against plant '" + options.plant.name + "'",
          .start_time_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(now).count(),
          .program = &checked->program});
     if (!written) {
@@ -161,11 +137,11 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
   const double simulated_s = recording.time_s.empty() ? 0.0 : recording.time_s.back();
   streams.out << "simulated " << name << " for "
               << (simulated.value().plant_stop.empty() ? options.duration_s : simulated_s) << " s ("
-              << simulated.value().ticks << " base ticks) against plant '" << options.plant << "'; wrote "
+              << simulated.value().ticks << " base ticks) against plant '" << options.plant.name << "'; wrote "
               << (csv.empty() || options.mdf.empty() ? csv + options.mdf : csv + " and " + options.mdf) << " ("
               << recording.names.size() << " columns)";
   if (!options.no_plot) {
-    plot::Figure figure{name + " against plant '" + options.plant + "'", "s", recording.time_s, {}};
+    plot::Figure figure{name + " against plant '" + options.plant.name + "'", "s", recording.time_s, {}};
     for (std::size_t k = 0; k < recording.names.size(); ++k) {
       figure.series.push_back({recording.names[k], recording.units[k], recording.columns[k]});
     }
@@ -177,23 +153,15 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
   return ExitCode::success;
 }
 
-std::string plant_list() {
-  std::string text;
-  for (const std::string& name : plant::plant_names()) text += (text.empty() ? "" : ", ") + name;
-  return text;
-}
-
 }  // namespace
 
 Action define_sim_command(CLI::App& command) {
   auto options = std::make_shared<SimOptions>();
   command.add_option("model", options->file, "The model file (docs/MODELS.md)")->required();
   command
-      .add_option(
-          "--plant", options->plant,
-          "What the model's hardware blocks are connected to: " + plant_list() +
-              ", a model file (.yaml) whose PlantInput and PlantOutput blocks meet them, or a co-simulation FMU "
-              "(.fmu) with --connect")
+      .add_option("--plant", options->plant.name,
+                  "What the model's hardware blocks are connected to: " + plant_list() +
+                      "; a plant model's PlantInput and PlantOutput blocks meet them by name")
       ->capture_default_str();
   command.add_option("--duration", options->duration_s, "Simulated time in seconds")
       ->capture_default_str()
@@ -204,33 +172,15 @@ Action define_sim_command(CLI::App& command) {
   command.add_option("--mdf", options->mdf, "Also (or instead of CSV) an MDF 4 file, the signals in their types");
   command.add_option("--plot", options->plot, "The SVG plot to write (default: the model's name .svg)");
   command.add_flag("--no-plot", options->no_plot, "Write no plot");
-  auto* seed = command.add_option("--seed", options->seed, "Seed of the plant's noise: the same seed, the same run")
-                   ->capture_default_str();
   command.add_option(
       "-p,--parameter", options->settings,
       "Tune a parameter from the start: NAME=VALUE, or NAME=V1,V2,... one per element (repeat for more)");
-  command.add_option("--scenario", options->scenario,
-                     "With --plant balbot: what happens to the robot (src/plant/balbot/README.md); --seed, if given, "
-                     "replaces its seed");
-  command
-      .add_option("--connect", options->connect,
-                  "With an FMU as --plant: the mapping file (YAML) of its variables to the model's resources "
-                  "(docs/FMI.md)")
-      ->type_name("FILE");
-  command
-      .add_option("--fmu-set", options->fmu_settings,
-                  "With an FMU as --plant: a parameter or start value, NAME=VALUE (repeat for more)")
-      ->type_name("NAME=VALUE");
-  return [options, seed](Streams streams) {
-    const bool fmu = options->plant.ends_with(".fmu");
-    if (fmu != !options->connect.empty() || (!fmu && !options->fmu_settings.empty())) {
-      streams.err << "duet sim: "
-                  << (fmu ? "an FMU as --plant needs --connect MAPPING.yaml"
-                          : "--connect and --fmu-set are for an FMU as --plant (X.fmu)")
-                  << '\n';
+  add_plant_options(command, options->plant);
+  return [options](Streams streams) {
+    if (auto misuse = plant_options_misuse(options->plant)) {
+      streams.err << "duet sim: " << *misuse << '\n';
       return ExitCode::usage;
     }
-    options->seed_given = seed->count() > 0;
     return run_sim(*options, streams);
   };
 }

@@ -165,10 +165,10 @@ TEST_F(SimGen, SimAgainstAnFmu) {
 
   outcome = run({"sim", controller, "--plant", fmus + "FirstOrderLag_fmi3.fmu"});
   EXPECT_EQ(outcome.exit_code, ExitCode::usage);
-  EXPECT_EQ(outcome.err, "duet sim: an FMU as --plant needs --connect MAPPING.yaml\n");
+  EXPECT_EQ(outcome.err, "duet sim: an FMU as the plant needs --connect MAPPING.yaml\n");
   outcome = run({"sim", controller, "--connect", testing + "lag.connect.yaml"});
   EXPECT_EQ(outcome.exit_code, ExitCode::usage);
-  EXPECT_EQ(outcome.err, "duet sim: --connect and --fmu-set are for an FMU as --plant (X.fmu)\n");
+  EXPECT_EQ(outcome.err, "duet sim: --connect and --fmu-set are for an FMU as the plant (X.fmu)\n");
   outcome = run({"sim", controller, "--plant", fmus + "NoBinary.fmu", "--connect", testing + "lag.connect.yaml"});
   EXPECT_EQ(outcome.exit_code, ExitCode::failure);
   EXPECT_EQ(outcome.err, "duet sim: " + fmus +

@@ -25,7 +25,13 @@ Result<std::unique_ptr<FmuPlant>> FmuPlant::load(Options options) {
     if (std::find(observed.begin(), observed.end(), name) == observed.end()) observed.push_back(name);
   }
   for (const std::string& name : observed) plant->fetched_.push_back({fmu.variable(name)});
+  return plant;
+}
 
+Status FmuPlant::start(double base_period_s) {
+  if (started_) return Failure{"the FMU plant was started twice"};
+  fmi::ImportedFmu& fmu = *fmu_;
+  const FmuMapping& mapping = mapping_;
   // Inputs take their values in initialisation mode (2.0 allows no earlier), everything else before it.
   const auto is_input = [&fmu](const Setting& setting) {
     return fmu.variable(setting.variable)->causality == fmi::Causality::input;
@@ -43,16 +49,17 @@ Result<std::unique_ptr<FmuPlant>> FmuPlant::load(Options options) {
     }
     return done();
   };
-  if (auto initialized = fmu.initialize(0.0, options.step_s, set_inputs); !initialized)
+  if (auto initialized = fmu.initialize(0.0, base_period_s, set_inputs); !initialized)
     return Failure{initialized.error()};
   // Connected inputs start from the FMU's own start values until the controller writes them.
-  for (Slot& input : plant->inputs_) {
+  for (Slot& input : inputs_) {
     auto value = fmu.get(*input.variable);
     if (!value) return Failure{value.error()};
     input.value = value.value();
   }
-  if (auto fetched = plant->fetch(); !fetched) return Failure{fetched.error()};
-  return plant;
+  if (auto fetched = fetch(); !fetched) return Failure{fetched.error()};
+  started_ = true;
+  return done();
 }
 
 Status FmuPlant::fetch() {
@@ -69,6 +76,7 @@ void FmuPlant::fail(std::string reason) {
 }
 
 void FmuPlant::advance(double time_s, const plant::RaiseInterrupt&) {
+  if (!started_) return fail("the FMU plant was advanced before it was started");
   if (halt_ || time_s < fmu_->time() + 1e-12) return;  // nothing to step (time 0, or a halted FMU)
   for (const Slot& input : inputs_) {
     if (auto set = fmu_->set(*input.variable, input.value); !set) return fail(set.error());

@@ -15,12 +15,14 @@ const plant::RaiseInterrupt no_interrupts = [](std::string_view) {};
 FmuMapping lag_mapping() { return read_fmu_mapping(DUET_FMU_PLANT_TESTING_DIR "/lag.connect.yaml").value(); }
 
 std::unique_ptr<FmuPlant> load(const std::string& fmu, FmuMapping mapping, std::vector<std::string>* log = nullptr) {
-  auto plant = FmuPlant::load(
-      {.fmu = fmus / fmu, .mapping = std::move(mapping), .step_s = 0.01, .log = [log](std::string_view line) {
-         if (log != nullptr) log->emplace_back(line);
-       }});
+  auto plant = FmuPlant::load({.fmu = fmus / fmu, .mapping = std::move(mapping), .log = [log](std::string_view line) {
+                                 if (log != nullptr) log->emplace_back(line);
+                               }});
   EXPECT_TRUE(plant) << plant.error();
-  return plant ? std::move(plant).value() : nullptr;
+  if (!plant) return nullptr;
+  const Status started = plant.value()->start(0.01);
+  EXPECT_TRUE(started) << started.error();
+  return started ? std::move(plant).value() : nullptr;
 }
 
 class LagPlant : public ::testing::TestWithParam<std::string> {};
@@ -98,10 +100,27 @@ TEST(FmuPlant, FailsOnAReadNoOutputAnswers) {
 }
 
 TEST(FmuPlant, RefusesAMappingThatDoesNotFitTheFmu) {
-  auto plant = FmuPlant::load({.fmu = fmus / "DoubleIntegrator_fmi3.fmu", .mapping = lag_mapping(), .step_s = 0.01});
+  auto plant = FmuPlant::load({.fmu = fmus / "DoubleIntegrator_fmi3.fmu", .mapping = lag_mapping()});
   ASSERT_FALSE(plant);
   EXPECT_EQ(plant.error(),
             std::string{DUET_FMU_PLANT_TESTING_DIR} + "/lag.connect.yaml:4: the FMU has no variable 'u'");
+}
+
+// Only the model knows its base period: the FMU is initialised when the simulation starts the plant, once.
+TEST(FmuPlant, StepsOnlyOnceStartedAndStartsOnce) {
+  auto loaded = FmuPlant::load({.fmu = fmus / "FirstOrderLag_fmi3.fmu", .mapping = lag_mapping()});
+  ASSERT_TRUE(loaded) << loaded.error();
+  FmuPlant& plant = *loaded.value();
+  plant.advance(0.01, no_interrupts);
+  ASSERT_TRUE(plant.halted());
+  EXPECT_EQ(plant.halted()->reason, "the FMU plant was advanced before it was started");
+
+  auto again = FmuPlant::load({.fmu = fmus / "FirstOrderLag_fmi3.fmu", .mapping = lag_mapping()});
+  ASSERT_TRUE(again) << again.error();
+  ASSERT_TRUE(again.value()->start(0.01));
+  const Status twice = again.value()->start(0.01);
+  ASSERT_FALSE(twice);
+  EXPECT_EQ(twice.error(), "the FMU plant was started twice");
 }
 
 }  // namespace

@@ -398,6 +398,67 @@ TEST(Serve, ATicksTimeIsItsNumberTimesTheBasePeriodInSeconds) {
   EXPECT_EQ(result.value().last_tick_s, clockwork.times[2]);
 }
 
+// A plant that starts, or not, with the firmware's base period, and halts at a time it is given.
+class Halting : public plant::Plant {
+ public:
+  Status start(double base_period_s) override {
+    started_with = base_period_s;
+    if (refuse_start) return Failure{"no FMU"};
+    return done();
+  }
+  void advance(double time_s, const plant::RaiseInterrupt&) override {
+    if (time_s >= halt_at) halt = Halt{.reason = "enough", .failed = failed};
+  }
+  void write(std::string_view, std::span<const double>) override {}
+  void read(std::string_view, std::span<double>) override {}
+  [[nodiscard]] std::optional<Halt> halted() const override { return halt; }
+  bool refuse_start = false;
+  double halt_at = 1e9;
+  bool failed = false;
+  double started_with = 0;
+  std::optional<Halt> halt;
+};
+
+TEST(Serve, ThePlantStartsWithTheBasePeriodOfTheHelloOrTheSessionFails) {
+  Halting plant;
+  plant.refuse_start = true;
+  auto result = serve_against(plant, [](Peer& firmware) {
+    EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
+    EXPECT_EQ(firmware.expect_frame(), FrameKind::error);
+  });
+  EXPECT_EQ(plant.started_with, 0.001);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error(), "the plant cannot start: no FMU");
+}
+
+// A plant that fails fails the session at that tick; one that asks to stop ends it, and the summary says why. The
+// firmware learns of either by ERROR in place of TICK_DONE.
+TEST(Serve, APlantThatHaltsEndsTheSessionAtThatTick) {
+  for (const bool failed : {true, false}) {
+    Halting plant;
+    plant.halt_at = 0.002;
+    plant.failed = failed;
+    auto result = serve_against(plant, [](Peer& firmware) {
+      EXPECT_TRUE(firmware.channel().send_hello(hello_one_ms).ok());
+      EXPECT_EQ(firmware.expect_frame(), FrameKind::hello_ok);
+      for (const std::uint64_t tick : {0ULL, 1ULL}) {
+        EXPECT_TRUE(firmware.channel().send_tick(tick).ok());
+        EXPECT_EQ(firmware.expect_frame(), FrameKind::tick_done);
+      }
+      EXPECT_TRUE(firmware.channel().send_tick(2).ok());
+      EXPECT_EQ(firmware.expect_frame(), FrameKind::error);
+    });
+    if (failed) {
+      ASSERT_FALSE(result.ok());
+      EXPECT_EQ(result.error(), "the plant failed at t = 0.002 s: enough");
+    } else {
+      ASSERT_TRUE(result.ok()) << result.error();
+      EXPECT_EQ(result.value().plant_stop, "the plant asked to stop at t = 0.002 s: enough");
+      EXPECT_EQ(result.value().ticks, 3U);
+    }
+  }
+}
+
 // duet::blocks::convert's rules (convert.hpp): to bool u != 0, a NaN true; floating to integer NaN 0, truncated
 // toward zero and saturated; double to float rounded to nearest, beyond float's range an infinity.
 TEST(Serve, TypedElementsAreConvertedAsTheInterpreterConvertsThem) {

@@ -1,5 +1,7 @@
 #include "duet/link/serve.hpp"
 
+#include <array>
+#include <charconv>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,6 +26,13 @@ auto with_element_type(ElementType type, Run&& run) {
     case ElementType::f64: break;
   }
   return run(double{});
+}
+
+// A time as the shortest text that reads back as the same double ("0.05").
+std::string shortest(double value) {
+  std::array<char, 32> text{};
+  char* const end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
+  return std::string(text.data(), end);
 }
 
 // One firmware's session: a handler per kind of frame the firmware may send.
@@ -53,6 +62,7 @@ class Server {
         default: handled = unexpected(frame, awaiting); break;
       }
       if (!handled) return handled;
+      if (!summary_.plant_stop.empty()) return done();
     }
   }
 
@@ -72,6 +82,10 @@ class Server {
     }
     if (summary_.hello.base_period_ns == 0) {
       return channel_.fail("the firmware's HELLO gives a base period of 0 ns: the plant's time is tick x base period");
+    }
+    const double base_period_s = static_cast<double>(summary_.hello.base_period_ns) * 1e-9;
+    if (Status started = plant_.start(base_period_s); !started) {
+      return channel_.fail("the plant cannot start: " + started.error());
     }
     if (Status answered = channel_.send_hello_ok({protocol_version}); !answered) return answered;
     return channel_.flush();
@@ -128,7 +142,18 @@ class Server {
     }
     plant_.advance(time_s, raise_);
     if (failure_) return *failure_;
+    if (const std::optional<plant::Plant::Halt> halt = plant_.halted()) return halted(*halt, time_s);
     return channel_.send_empty(FrameKind::tick_done);
+  }
+
+  // The plant cannot go on (an imported FMU that failed or asked to stop): the firmware is told with ERROR, the only
+  // ending a plant can give a tick. A failure fails the session; a request to stop ends it, kept in the summary.
+  Status halted(const plant::Plant::Halt& halt, double time_s) {
+    const std::string at = "at t = " + shortest(time_s) + " s: " + halt.reason;
+    if (halt.failed) return channel_.fail("the plant failed " + at);
+    summary_.plant_stop = "the plant asked to stop " + at;
+    (void)channel_.fail(summary_.plant_stop);
+    return done();
   }
 
   // What the plant calls during advance(): the firmware runs the interrupt task, whose frames are served here.

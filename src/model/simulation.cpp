@@ -166,6 +166,8 @@ Result<SimulationResult> simulate(const Program& program, plant::Plant& plant, c
   }
   auto signals = recorded_signals(program, options);
   if (!signals) return Failure{signals.error()};
+  // Before the model's initialisation, whose writes the plant takes.
+  if (Status started = plant.start(program.model->base_period_us * 1e-6); !started) return Failure{started.error()};
   auto created = ModelRunner::create(program, plant);
   if (!created) return Failure{created.error()};
   ModelRunner& runner = *created.value();

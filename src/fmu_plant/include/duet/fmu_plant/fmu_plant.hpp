@@ -24,11 +24,13 @@ class FmuPlant : public plant::Plant {
   struct Options {
     std::filesystem::path fmu;
     FmuMapping mapping;
-    double step_s = 0;  // the controller's base period
-    fmi::FmuLog log;    // the FMU's messages
+    fmi::FmuLog log;  // the FMU's messages
   };
-  // Opens the FMU, checks the mapping against it, sets the values and initialises it at time 0.
+  // Opens the FMU and checks the mapping against it.
   [[nodiscard]] static Result<std::unique_ptr<FmuPlant>> load(Options options);
+
+  // Sets the mapping's values and initialises the FMU at time 0, to step at `base_period_s`.
+  [[nodiscard]] Status start(double base_period_s) override;
 
   void advance(double time_s, const plant::RaiseInterrupt& raise) override;
   void write(std::string_view resource, std::span<const double> values) override;
@@ -55,6 +57,7 @@ class FmuPlant : public plant::Plant {
   std::vector<Slot> fetched_;  // mapping_.outputs' order, then the observables'
   std::size_t observed_from_ = 0;
   std::optional<Halt> halt_;
+  bool started_ = false;
 };
 
 }  // namespace duet::fmu_plant

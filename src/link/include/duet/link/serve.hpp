@@ -7,6 +7,7 @@
 // firmware cannot: firmware on an emulator with a virtual clock runs as fast as the emulator goes.
 
 #include <cstdint>
+#include <string>
 
 #include "duet/link/frame.hpp"
 #include "duet/link/pacer.hpp"
@@ -31,6 +32,8 @@ struct ServeSummary {
   std::uint64_t reads = 0;
   double last_tick_s = 0;  // the time of the last TICK: how far the session went
   bool said_bye = false;   // false: the stream ended without BYE
+  // Why the plant ended the session, when it asked to stop (an imported FMU's request); empty otherwise.
+  std::string plant_stop;
   // Paced sessions: how late the TICKs went, and whether the firmware could have kept real time (Pacer).
   PacingReport pacing;
 };

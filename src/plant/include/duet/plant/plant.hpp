@@ -47,6 +47,13 @@ class Plant {
   Plant& operator=(const Plant&) = delete;
   virtual ~Plant() = default;
 
+  // Once, before the first advance(): the model's base period, the pace at which advance() will come. A plant that
+  // steps with the model (an imported FMU) initialises here, since only the model knows its period; a failure ends
+  // the run before it begins.
+  [[nodiscard]] virtual Status start(double base_period_s) {
+    (void)base_period_s;
+    return done();
+  }
   // Moves the plant's time on to `time_s`, raising the interrupts that happen by then.
   virtual void advance(double time_s, const RaiseInterrupt& raise) = 0;
   // The model drives an output resource (an actuator) with these element values.

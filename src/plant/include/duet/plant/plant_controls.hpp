@@ -76,6 +76,7 @@ class ControlledPlant final : public Plant {
   // Requests not applied yet are answered: the plant is no longer served.
   ~ControlledPlant() override;
 
+  [[nodiscard]] Status start(double base_period_s) override { return behind_->start(base_period_s); }
   void advance(double time_s, const RaiseInterrupt& raise) override;
   void write(std::string_view resource, std::span<const double> values) override { behind_->write(resource, values); }
   void read(std::string_view resource, std::span<double> values) override { behind_->read(resource, values); }
@@ -83,6 +84,7 @@ class ControlledPlant final : public Plant {
   void observe(std::span<double> values) const override { behind_->observe(values); }
   [[nodiscard]] std::vector<DisturbanceKind> disturbances() const override { return behind_->disturbances(); }
   void disturb(const Disturbance& disturbance, double time_s) override { behind_->disturb(disturbance, time_s); }
+  [[nodiscard]] std::optional<Halt> halted() const override { return behind_->halted(); }
 
  private:
   std::unique_ptr<Plant> behind_;
