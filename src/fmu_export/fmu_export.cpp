@@ -92,7 +92,7 @@ Result<ExportSummary> export_fmu(const model::Program& program, const std::files
   for (const model::ProgramTask& task : program.tasks) {
     if (task.rate.kind == model::Rate::Kind::interrupt) {
       summary.notes.push_back("task '" + task.name + "' runs on interrupt " + task.rate.interrupt +
-                              ", which nothing raises in an FMU: it never runs there");
+                              ": the importer raises it by counting up the input interrupt:" + task.rate.interrupt);
     }
   }
   return summary;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "duet/fmi/archive.hpp"
+#include "duet/fmi/imported_fmu.hpp"
 #include "duet/fmi/model_description_reader.hpp"
 #include "duet/model/model_file.hpp"
 #include "duet/support/temporary_folder.hpp"
@@ -22,6 +23,7 @@ using ::testing::MatchesRegex;
 
 const std::string thermostat = DUET_SOURCE_DIR "/apps/thermostat/thermostat.yaml";
 const std::string heater = DUET_SOURCE_DIR "/apps/thermostat/heater.yaml";
+const std::string pulses = DUET_SOURCE_DIR "/src/fmu_export/testing/pulses.yaml";
 
 struct Loaded {
   std::unique_ptr<model::Model> model;
@@ -167,6 +169,62 @@ TEST(FmuExport, AnFmi3FmuDrivenByAnIndependentCHostFollowsTheRulesAndDuetSim) {
 
 TEST(FmuExport, AnFmi2FmuDrivenByAnIndependentCHostFollowsTheRulesAndDuetSim) {
   drive_with_the_c_host(fmi::FmiVersion::v2);
+}
+
+// An interrupt task runs when the importer counts its interrupt up: as often as the count grew, at the start of the
+// next step, interrupts raised together most urgent first (TIM2, priority 3, before EXTI0, priority 5: the pin they
+// both drive shows EXTI0's low). A count that goes back or grows beyond 1000 in a step is refused, running nothing.
+void raise_interrupts(fmi::FmiVersion version) {
+  auto folder = TemporaryFolder::make("fmu_export_test_").value();
+  const std::filesystem::path file = exported(pulses, version, folder.path());
+  auto opened = fmi::ImportedFmu::open(file, {});
+  ASSERT_TRUE(opened.ok()) << opened.error();
+  fmi::ImportedFmu& fmu = *opened.value();
+  ASSERT_TRUE(fmu.initialize(0, 0.001, [] { return done(); }).ok());
+  const auto value = [&fmu](const std::string& name) { return fmu.get(*fmu.variable(name)).value(); };
+  const auto raise = [&fmu](const std::string& interrupt, double count) {
+    ASSERT_TRUE(fmu.set(*fmu.variable("interrupt:" + interrupt), count).ok());
+  };
+  ASSERT_TRUE(fmu.advance_to(0.002).ok());
+  EXPECT_EQ(value("ticks"), 3);  // the periodic task runs alone
+  EXPECT_EQ(value("pulses"), 0);
+  EXPECT_EQ(value("timer_events"), 0);
+  raise("EXTI0", 3);
+  ASSERT_TRUE(fmu.advance_to(0.003).ok());
+  EXPECT_EQ(value("pulses"), 3);
+  EXPECT_EQ(value("gpio:LED0"), 0);
+  raise("EXTI0", 4);
+  raise("TIM2", 1);
+  ASSERT_TRUE(fmu.advance_to(0.004).ok());
+  EXPECT_EQ(value("pulses"), 4);
+  EXPECT_EQ(value("timer_events"), 1);
+  EXPECT_EQ(value("gpio:LED0"), 0);  // TIM2 first, then EXTI0
+  ASSERT_TRUE(fmu.advance_to(0.005).ok());
+  EXPECT_EQ(value("pulses"), 4);  // nothing raised since
+  EXPECT_EQ(value("ticks"), 6);
+  raise("TIM2", 1002);
+  const Status runaway = fmu.advance_to(0.006);
+  ASSERT_FALSE(runaway.ok());
+  EXPECT_THAT(runaway.error(), HasSubstr("interrupt:TIM2 grew by 1001 in one step; at most 1000 interrupts of one "
+                                         "kind run in a step"));
+
+  auto again = fmi::ImportedFmu::open(file, {});
+  ASSERT_TRUE(again.ok()) << again.error();
+  ASSERT_TRUE(again.value()->initialize(0, 0.001, [] { return done(); }).ok());
+  ASSERT_TRUE(again.value()->set(*again.value()->variable("interrupt:EXTI0"), 2).ok());
+  ASSERT_TRUE(again.value()->advance_to(0.001).ok());
+  ASSERT_TRUE(again.value()->set(*again.value()->variable("interrupt:EXTI0"), 1).ok());
+  const Status back = again.value()->advance_to(0.002);
+  ASSERT_FALSE(back.ok());
+  EXPECT_THAT(back.error(), HasSubstr("interrupt:EXTI0 went back from 2 to 1: it counts the interrupts raised"));
+}
+
+TEST(FmuExport, AnFmi3FmuRunsAnInterruptTaskWhenTheImporterCountsItsInterruptUp) {
+  raise_interrupts(fmi::FmiVersion::v3);
+}
+
+TEST(FmuExport, AnFmi2FmuRunsAnInterruptTaskWhenTheImporterCountsItsInterruptUp) {
+  raise_interrupts(fmi::FmiVersion::v2);
 }
 
 }  // namespace

@@ -110,6 +110,7 @@ class Builder {
          .description = "simulation time"},
         {.role = Role::time});
     add_resources();
+    add_interrupts();
     add_parameters();
     add_signals();
     for (const fmi::Variable& variable : description.variables) {
@@ -176,6 +177,29 @@ class Builder {
           add(std::move(variable), {.role = read ? Role::input : Role::output, .index = used++});
         }
       }
+    }
+  }
+
+  // A counter per interrupt that triggers a task: the importer raises the interrupt by counting it up.
+  void add_interrupts() {
+    for (std::size_t task = 0; task < program_.tasks.size(); ++task) {
+      const model::ProgramTask& triggered = program_.tasks[task];
+      if (triggered.rate.kind != model::Rate::Kind::interrupt) continue;
+      std::vector<std::string>& names = result_.interrupts;
+      const auto known = std::find(names.begin(), names.end(), triggered.rate.interrupt);
+      const std::size_t counter = static_cast<std::size_t>(known - names.begin());
+      result_.interrupt_tasks.push_back({.counter = counter, .task = task});
+      if (known != names.end()) continue;
+      names.push_back(triggered.rate.interrupt);
+      add({.name = "interrupt:" + triggered.rate.interrupt,
+           .type = fmi_type(DataType::int32, version_),
+           .causality = Causality::input,
+           .variability = Variability::discrete,
+           .initial = version_ == fmi::FmiVersion::v3 ? Initial::exact : Initial::none,
+           .start = "0",
+           .description = "how often interrupt " + triggered.rate.interrupt +
+                          " was raised: each increment runs its task(s) once at the start of the next step"},
+          {.role = Role::interrupt_count, .type = DataType::int32, .index = counter});
     }
   }
 

@@ -19,6 +19,7 @@ std::string_view role_name(Role role) {
     case Role::output: return "output";
     case Role::fixed_parameter: return "fixed_parameter";
     case Role::tunable_parameter: return "tunable_parameter";
+    case Role::interrupt_count: return "interrupt_count";
     case Role::local: break;
   }
   return "local";
@@ -63,6 +64,12 @@ std::string model_table_source(const FmuInterface& interface, const std::string&
     text += "    {" + quoted(resource.name) + ", " + (resource.read ? "true" : "false") + ", " +
             std::to_string(resource.first) + ", " + std::to_string(resource.count) + "},\n";
   }
+  text += "}};\n\nconst std::array<const char*, " + std::to_string(interface.interrupts.size()) + "> interrupts{{";
+  for (const std::string& interrupt : interface.interrupts) text += quoted(interrupt) + ", ";
+  text += "}};\n\nconst std::array<duet::fmu::InterruptTask, " + std::to_string(interface.interrupt_tasks.size()) +
+          "> interrupt_tasks{{\n";
+  for (const InterruptTask& task : interface.interrupt_tasks)
+    text += "    {" + std::to_string(task.counter) + ", " + std::to_string(task.task) + "},\n";
   text += "}};\n\n}  // namespace\n\nnamespace duet::fmu {\n\nconst ModelTable model{\n";
   text += "    .token = " + quoted(token) + ",\n";
   text += "    .base_period_ns = " + name + "::description.base_period_ns,\n";
@@ -77,7 +84,8 @@ std::string model_table_source(const FmuInterface& interface, const std::string&
   text +=
       "    .bind = [](void* storage) { " + name + "::instance = static_cast<" + name + "::Instance*>(storage); },\n";
   text += "    .initialize = " + name + "::initialize,\n    .terminate = " + name + "::terminate,\n";
-  text += "    .tasks = " + name + "::tasks,\n};\n\n}  // namespace duet::fmu\n";
+  text += "    .tasks = " + name + "::tasks,\n";
+  text += "    .interrupts = interrupts,\n    .interrupt_tasks = interrupt_tasks,\n};\n\n}  // namespace duet::fmu\n";
   return text;
 }
 

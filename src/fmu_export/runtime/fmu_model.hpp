@@ -21,14 +21,15 @@ enum class Role : std::uint8_t {
   output,             // what the model writes to a hardware resource: the instance's outputs, as doubles
   fixed_parameter,    // on the model's parameter page, read only while initialising: set before the first step
   tunable_parameter,  // on the model's parameter page, read by the steps: set before any step
-  local               // a measurable signal
+  local,              // a measurable signal
+  interrupt_count     // how often the importer raised an interrupt: the instance's counter of it
 };
 
 struct VariableSlot {
   const char* name;
   ValueType type;
   Role role;
-  std::size_t index;                // input and output: the place among the instance's inputs or outputs
+  std::size_t index;  // input, output, interrupt count: the place among the instance's inputs, outputs or counters
   void* (*address)(void* storage);  // parameters and locals: where the value is in the instance's model storage
 };
 
@@ -38,6 +39,12 @@ struct ResourceSlot {
   bool read;  // the model reads it (FMU inputs); otherwise it writes it (FMU outputs)
   std::size_t first;
   std::size_t count;
+};
+
+// An interrupt task and the counter that raises it (ModelTable::interrupts), by their places.
+struct InterruptTask {
+  std::size_t counter;
+  std::size_t task;  // in ModelTable::tasks
 };
 
 struct ModelTable {
@@ -54,6 +61,8 @@ struct ModelTable {
   void (*initialize)();
   void (*terminate)();
   std::span<const rt::Task> tasks;
+  std::span<const char* const> interrupts;  // the interrupts the importer raises, by counter: "EXTI8"
+  std::span<const InterruptTask> interrupt_tasks;
 };
 
 extern const ModelTable model;

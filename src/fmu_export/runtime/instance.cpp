@@ -54,6 +54,8 @@ Instance::Instance(std::string name, Logger logger, bool logging, const Rules& r
       storage_(model.create()),
       inputs_(model.inputs),
       outputs_(model.outputs),
+      raised_(model.interrupts.size()),
+      handled_(model.interrupts.size()),
       period_s_(static_cast<double>(model.base_period_ns) * 1e-9) {
   initialize_model();
 }
@@ -99,6 +101,7 @@ Status Instance::exit_initialization(const char* function) {
   if (phase_ != Phase::initialization) return illegal(function);
   initialize_model();
   tick();
+  handled_ = raised_;  // the counts given until now are where counting starts
   phase_ = Phase::step;
   set_since_step_ = false;
   return Status::ok;
@@ -116,8 +119,40 @@ Status Instance::do_step(const char* function, double point, double size) {
     return refuse(function, "a step of " + number(size) + " s is not a whole number of base periods (" +
                                 number(period_s_) + " s)");
   }
+  if (const Status raised = run_raised_interrupts(function); raised != Status::ok) return raised;
   for (double k = 0; k < periods; ++k) tick();
   set_since_step_ = false;
+  return Status::ok;
+}
+
+Status Instance::run_raised_interrupts(const char* function) {
+  if (raised_ == handled_) return Status::ok;  // most steps
+  // A handler runs to its end each time: an importer's runaway counter must not make a step unbounded.
+  constexpr std::int64_t most_per_step = 1000;
+  for (std::size_t counter = 0; counter < raised_.size(); ++counter) {
+    const std::int64_t grown = std::int64_t{raised_[counter]} - handled_[counter];
+    if (grown >= 0 && grown <= most_per_step) continue;
+    const std::string name = std::string{"interrupt:"} + model.interrupts[counter];
+    return refuse(function, grown < 0 ? name + " went back from " + std::to_string(handled_[counter]) + " to " +
+                                            std::to_string(raised_[counter]) + ": it counts the interrupts raised"
+                                      : name + " grew by " + std::to_string(grown) + " in one step; at most " +
+                                            std::to_string(most_per_step) + " interrupts of one kind run in a step");
+  }
+  // As the NVIC takes pending interrupts: the most urgent group first, then sub-priority, then the task table's order.
+  std::vector<const InterruptTask*> pending;
+  for (const InterruptTask& task : model.interrupt_tasks) {
+    if (raised_[task.counter] != handled_[task.counter]) pending.push_back(&task);
+  }
+  std::stable_sort(pending.begin(), pending.end(), [](const InterruptTask* a, const InterruptTask* b) {
+    const rt::InterruptPriority& first = model.tasks[a->task].priority;
+    const rt::InterruptPriority& second = model.tasks[b->task].priority;
+    return std::pair{first.group, first.sub} < std::pair{second.group, second.sub};
+  });
+  const Running running{*this};
+  for (const InterruptTask* task : pending) {
+    for (std::int32_t k = handled_[task->counter]; k != raised_[task->counter]; ++k) model.tasks[task->task].entry();
+  }
+  handled_ = raised_;
   return Status::ok;
 }
 
@@ -133,6 +168,8 @@ void Instance::reset() {
   model.load_reference_parameters(storage_);
   std::fill(inputs_.begin(), inputs_.end(), 0.0);
   std::fill(outputs_.begin(), outputs_.end(), 0.0);
+  std::fill(raised_.begin(), raised_.end(), 0);
+  std::fill(handled_.begin(), handled_.end(), 0);
   start_s_ = 0;
   phase_ = Phase::instantiated;
   set_since_step_ = false;
@@ -147,7 +184,7 @@ void Instance::initialize_model() {
 }
 
 // One base period: the periodic tasks due at this tick, fastest first, as the executive runs them in `duet sim`
-// (single-tasking, lock-step). Interrupt tasks never run: nothing raises their interrupts in an FMU.
+// (single-tasking, lock-step). Interrupt tasks run when the importer raises them (run_raised_interrupts).
 void Instance::tick() {
   const Running running{*this};
   for (const rt::Task& task : model.tasks) {
@@ -176,6 +213,7 @@ void* Instance::value_address(const VariableSlot& slot) {
     case Role::time: return &time_;
     case Role::input: return &inputs_[slot.index];
     case Role::output: return &outputs_[slot.index];
+    case Role::interrupt_count: return &raised_[slot.index];
     case Role::fixed_parameter:
     case Role::tunable_parameter:
     case Role::local: break;
@@ -186,6 +224,7 @@ void* Instance::value_address(const VariableSlot& slot) {
 bool Instance::settable(Role role) const {
   switch (role) {
     case Role::input:
+    case Role::interrupt_count:
     case Role::tunable_parameter: return phase_ != Phase::terminated;
     case Role::fixed_parameter: return phase_ == Phase::instantiated || phase_ == Phase::initialization;
     case Role::time:

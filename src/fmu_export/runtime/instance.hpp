@@ -83,6 +83,9 @@ class Instance {
 
   void initialize_model();
   void tick();
+  // The interrupt tasks raised since the last step, each as often as its counter grew, most urgent first; refused,
+  // running none, when a counter went back or grew by more than a step may run.
+  Status run_raised_interrupts(const char* function);
   // The variable behind a value reference, or null once the problem is logged.
   const VariableSlot* variable(const char* function, std::uint32_t reference, TypeSet accepted) const;
   void* value_address(const VariableSlot& slot);
@@ -95,6 +98,8 @@ class Instance {
   void* storage_;
   std::vector<double> inputs_;
   std::vector<double> outputs_;
+  std::vector<std::int32_t> raised_;   // the importer's interrupt counters
+  std::vector<std::int32_t> handled_;  // what the steps have run of them
   Phase phase_ = Phase::instantiated;
   double period_s_;
   double start_s_ = 0;
