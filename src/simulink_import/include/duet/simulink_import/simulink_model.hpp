@@ -31,9 +31,9 @@ struct System;
 // joined and escapes resolved; an .slx's <PortCounts in="2" out="1"/> is stored as "PortCounts" = "[2, 1]" beside
 // the older "Ports" = "[2, 1]", both as written.
 struct Block {
-  std::string type;  // BlockType: "Gain", "SubSystem", "Reference", ...
-  std::string name;  // unique within its system; may hold newlines
-  std::string sid;   // empty in files that have none
+  std::string type;                                    // BlockType: "Gain", "SubSystem", "Reference", ...
+  std::string name;                                    // unique within its system; may hold newlines
+  std::string sid;                                     // empty in files that have none
   std::map<std::string, std::string> parameters;       // <P Name=...> / "Name value", as stored
   std::map<std::string, std::string> mask_parameters;  // a masked block's or a library link's values (InstanceData)
   std::vector<System> systems;                         // a subsystem's contents: one, or none
