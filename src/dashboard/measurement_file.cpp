@@ -9,55 +9,34 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <limits>
-#include <type_traits>
 
+#include "duet/mdf4/exact_value.hpp"
 #include "duet/mdf4/writer.hpp"
 
 namespace duet::dashboard {
 namespace {
 
-// Whether `value` is exactly a T; a missing sample (NaN) is one of every type.
-template <typename T>
-bool fits(double value) {
-  if (std::isnan(value) || std::is_same_v<T, double>) return true;
-  if constexpr (std::is_same_v<T, float>) {
-    if (std::isinf(value)) return true;
-    return std::fabs(value) <= std::numeric_limits<float>::max() &&
-           static_cast<double>(static_cast<float>(value)) == value;
-  } else {
-    // max() + 1 is exact below 64 bits, and rounds to 2^63 or 2^64 at 64 bits: the first value past the type.
-    return value == std::trunc(value) && value >= static_cast<double>(std::numeric_limits<T>::min()) &&
-           value < static_cast<double>(std::numeric_limits<T>::max()) + 1.0;
-  }
-}
+// Whether `value` is exactly a `type`; a missing sample (NaN) is one of every type.
+bool fits(mdf4::ValueType type, double value) { return std::isnan(value) || mdf4::exactly(type, value).has_value(); }
 
-// Precondition: fits<T>(value).
-template <typename T>
-mdf4::Value value_as(double value) {
+// Precondition: fits(type, value).
+mdf4::Value stored_value(mdf4::ValueType type, double value) {
   if (std::isnan(value)) return std::monostate{};
-  return static_cast<T>(value);
+  return *mdf4::exactly(type, value);
 }
 
 struct StoredType {
   std::string_view name;  // as the description names it
   mdf4::ValueType type;
-  bool (*fits)(double);
-  mdf4::Value (*value)(double);
 };
 
-constexpr StoredType f64_type{"float64", mdf4::ValueType::f64, fits<double>, value_as<double>};
+constexpr StoredType f64_type{"float64", mdf4::ValueType::f64};
 constexpr StoredType stored_types[] = {
-    {"uint8", mdf4::ValueType::u8, fits<std::uint8_t>, value_as<std::uint8_t>},
-    {"int8", mdf4::ValueType::i8, fits<std::int8_t>, value_as<std::int8_t>},
-    {"uint16", mdf4::ValueType::u16, fits<std::uint16_t>, value_as<std::uint16_t>},
-    {"int16", mdf4::ValueType::i16, fits<std::int16_t>, value_as<std::int16_t>},
-    {"uint32", mdf4::ValueType::u32, fits<std::uint32_t>, value_as<std::uint32_t>},
-    {"int32", mdf4::ValueType::i32, fits<std::int32_t>, value_as<std::int32_t>},
-    {"uint64", mdf4::ValueType::u64, fits<std::uint64_t>, value_as<std::uint64_t>},
-    {"int64", mdf4::ValueType::i64, fits<std::int64_t>, value_as<std::int64_t>},
-    {"float32", mdf4::ValueType::f32, fits<float>, value_as<float>},
-    f64_type,
+    {"uint8", mdf4::ValueType::u8},    {"int8", mdf4::ValueType::i8},
+    {"uint16", mdf4::ValueType::u16},  {"int16", mdf4::ValueType::i16},
+    {"uint32", mdf4::ValueType::u32},  {"int32", mdf4::ValueType::i32},
+    {"uint64", mdf4::ValueType::u64},  {"int64", mdf4::ValueType::i64},
+    {"float32", mdf4::ValueType::f32}, f64_type,
 };
 
 // The described type when every value fits it, else f64 with a comment saying why.
@@ -65,7 +44,7 @@ const StoredType& stored_type(const MeasuredSignal& signal, std::string& comment
   for (const StoredType& stored : stored_types) {
     if (stored.name != signal.described_type) continue;
     for (const double value : signal.values) {
-      if (!stored.fits(value)) {
+      if (!fits(stored.type, value)) {
         comment = "described as " + signal.described_type + "; stored as float64: a value is no " +
                   signal.described_type + " (a conversion of the target's, or a bad sample)";
         return f64_type;
@@ -135,7 +114,7 @@ Result<std::string> mdf4_bytes(const Measurement& measurement) {
   std::vector<mdf4::Value> row(measurement.signals.size());
   for (std::size_t sample = 0; sample < measurement.time_s.size(); ++sample) {
     for (std::size_t signal = 0; signal < row.size(); ++signal)
-      row[signal] = stored[signal]->value(measurement.signals[signal].values[sample]);
+      row[signal] = stored_value(stored[signal]->type, measurement.signals[signal].values[sample]);
     if (Status appended = writer.value().append(0, measurement.time_s[sample], row); !appended)
       return Failure{appended.error()};
   }

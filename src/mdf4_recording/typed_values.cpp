@@ -1,23 +1,20 @@
 #include "duet/mdf4_recording/typed_values.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <string_view>
 
+#include "duet/mdf4/exact_value.hpp"
 #include "duet/model/data_type.hpp"
 
 namespace duet::mdf4_recording {
 namespace {
 
-template <typename Integer>
-Result<mdf4::Value> integer(double value, std::string_view type) {
-  // The range test is on doubles: both ends of every integer up to 32 bits are exact, and for 64 bits the upper end
-  // rounds up to 2^63 or 2^64, which the strict comparison excludes.
-  if (std::trunc(value) != value || value < static_cast<double>(std::numeric_limits<Integer>::min()) ||
-      !(value < static_cast<double>(std::numeric_limits<Integer>::max()) + 1.0)) {
-    return Failure{model::format_number(value) + " is no " + std::string{type} + " value"};
-  }
-  return mdf4::Value{static_cast<Integer>(value)};
-}
+// In ValueType's order.
+constexpr std::array<std::string_view, 11> stored_names{"boolean", "u8",  "u16", "u32", "u64", "i8",
+                                                        "i16",     "i32", "i64", "f32", "f64"};
 
 }  // namespace
 
@@ -37,25 +34,16 @@ mdf4::ValueType value_type(model::DataType type) {
 }
 
 Result<mdf4::Value> typed_value(double value, mdf4::ValueType type) {
-  switch (type) {
-    case mdf4::ValueType::boolean:
-      if (value != 0 && value != 1) return Failure{model::format_number(value) + " is no boolean value"};
-      return mdf4::Value{value == 1};
-    case mdf4::ValueType::u8: return integer<std::uint8_t>(value, "u8");
-    case mdf4::ValueType::u16: return integer<std::uint16_t>(value, "u16");
-    case mdf4::ValueType::u32: return integer<std::uint32_t>(value, "u32");
-    case mdf4::ValueType::u64: return integer<std::uint64_t>(value, "u64");
-    case mdf4::ValueType::i8: return integer<std::int8_t>(value, "i8");
-    case mdf4::ValueType::i16: return integer<std::int16_t>(value, "i16");
-    case mdf4::ValueType::i32: return integer<std::int32_t>(value, "i32");
-    case mdf4::ValueType::i64: return integer<std::int64_t>(value, "i64");
-    case mdf4::ValueType::f32:
-      if (std::isfinite(value) && std::abs(value) > std::numeric_limits<float>::max())
-        return Failure{model::format_number(value) + " is no f32 value"};
-      return mdf4::Value{static_cast<float>(value)};
-    case mdf4::ValueType::f64: return mdf4::Value{value};
+  if (type == mdf4::ValueType::f32) {  // rounded, as a float signal's arithmetic rounds
+    if (std::isfinite(value) && std::abs(value) > std::numeric_limits<float>::max())
+      return Failure{model::format_number(value) + " is no f32 value"};
+    return mdf4::Value{static_cast<float>(value)};
   }
-  return Failure{"no such type"};
+  std::optional<mdf4::Value> exact = mdf4::exactly(type, value);
+  if (!exact)
+    return Failure{model::format_number(value) + " is no " + std::string{stored_names[static_cast<std::size_t>(type)]} +
+                   " value"};
+  return *exact;
 }
 
 }  // namespace duet::mdf4_recording
