@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <random>
 #include <sstream>
 
 namespace duet::simulink_import {
@@ -247,6 +248,28 @@ INSTANTIATE_TEST_SUITE_P(
         Malformed{std::string(201, '{') + std::string(201, '}'), "model.mdl:1: sections nested deeper than 200"},
         Malformed{"Model {\n  Name \"m\"\n}\nModel {\n}\n",
                   "model.mdl:4: a second 'Model' section (the first on line 1)"}));
+
+// Until the fuzz target exists: the test model cut short at many places and with bytes changed at random (fixed
+// seed) either reads or is refused with a message that names a line; the sanitizers watch for anything worse.
+TEST(ClassicMdl, DamagedCopiesOfTheTestModelReadOrAreRefusedWithALine) {
+  const std::string original = file_bytes("controller.mdl");
+  const auto check = [](const std::string& bytes) {
+    const Result<SimulinkModel> model = read_classic_mdl(bytes, "controller.mdl");
+    if (!model) {
+      EXPECT_THAT(model.error(), testing::MatchesRegex("controller\\.mdl:[0-9]+: .+"));
+    }
+  };
+  for (std::size_t length = 0; length < original.size(); length += 11) check(original.substr(0, length));
+  std::mt19937 random{26};
+  std::uniform_int_distribution<std::size_t> place{0, original.size() - 1};
+  constexpr std::string_view replacements = "{}[]\"\\\n \x80\xE4x1";
+  std::uniform_int_distribution<std::size_t> replacement{0, replacements.size() - 1};
+  for (int copy = 0; copy < 400; ++copy) {
+    std::string damaged = original;
+    for (int change = 0; change < 3; ++change) damaged[place(random)] = replacements[replacement(random)];
+    check(damaged);
+  }
+}
 
 TEST(ClassicMdl, RefusesAModelWithoutASystem) {
   const Result<SimulinkModel> model = read("Model {\n  Name \"m\"\n}\n");
