@@ -185,6 +185,17 @@ TEST(ClassicMdl, UsesTheOnlyConfigurationSetWhenNoneIsNamedActive) {
   EXPECT_EQ(read(text).value().solver.parameters, (Parameters{{"FixedStep", "Ts"}}));
 }
 
+TEST(ClassicMdl, FindsTheActiveConfigurationSetWhateverSectionNamesIt) {
+  const std::string sets =
+      "  Array {\n    Simulink.ConfigSet {\n      $ObjectID 4\n      Array {\n        Simulink.SolverCC {\n"
+      "          FixedStep \"0.01\"\n        }\n      }\n    }\n    Simulink.ConfigSet {\n      $ObjectID 5\n"
+      "      Array {\n        Simulink.SolverCC {\n          FixedStep \"0.002\"\n        }\n      }\n    }\n  }\n";
+  const std::string text =
+      model_with("", sets + "  Simulink.ConfigSet {\n    $PropName \"ActiveConfigurationSet\"\n    $ObjectID 5\n  }\n");
+  ASSERT_TRUE(read(text)) << read(text).error();
+  EXPECT_EQ(read(text).value().solver.parameters, (Parameters{{"FixedStep", "0.002"}}));
+}
+
 struct Malformed {
   std::string text;
   std::string message;
@@ -218,7 +229,7 @@ INSTANTIATE_TEST_SUITE_P(
         Malformed{"Model {\n  Version 9.0\n}\n", "model.mdl:1: the model has no Name"},
         Malformed{model_with("    Block {\n      Name \"Gain1\"\n    }\n"),
                   "model.mdl:5: block 'Gain1' without a BlockType"},
-        Malformed{model_with("    Block {\n      BlockType Gain\n    }\n"), "model.mdl:5: block without a Name"},
+        Malformed{model_with("    Block {\n      BlockType Gain\n    }\n"), "model.mdl:5: Gain block without a Name"},
         Malformed{model_with(gain + gain), "model.mdl:9: two blocks named 'Gain1' in system 'm' (the other on line 5)"},
         Malformed{model_with("    Block {\n      BlockType SubSystem\n      Name \"Sub\"\n      System {\n" + gain +
                              "        Line {\n          SrcBlock \"Gain2\"\n          SrcPort 1\n        }\n"

@@ -75,7 +75,8 @@ Result<Block> read_block(const MdlNode& section, const std::string& system_path,
   block.type = pair_value(section, "BlockType");
   block.name = pair_value(section, "Name");
   block.sid = pair_value(section, "SID");
-  if (block.name.empty()) return mdl_failure(file, section.line, "block without a Name");
+  if (block.name.empty())
+    return mdl_failure(file, section.line, (block.type.empty() ? "block" : block.type + " block") + " without a Name");
   if (block.type.empty()) return mdl_failure(file, section.line, "block '" + block.name + "' without a BlockType");
   Status pairs = add_mdl_pairs(section, block.parameters, file, {"BlockType", "Name", "SID"});
   if (!pairs) return Failure{pairs.error()};
