@@ -1,5 +1,6 @@
 #include "mdl_syntax.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -216,6 +217,19 @@ const MdlNode* find_pair(const MdlNode& section, std::string_view name) {
 std::string pair_value(const MdlNode& section, std::string_view name) {
   const MdlNode* pair = find_pair(section, name);
   return pair ? pair->value : std::string{};
+}
+
+Status add_mdl_pairs(const MdlNode& section, std::map<std::string, std::string>& into, const std::string& file,
+                     std::initializer_list<std::string_view> skipped) {
+  for (const MdlNode& child : section.children) {
+    if (child.is_section || child.name.empty()) continue;
+    if (std::find(skipped.begin(), skipped.end(), child.name) != skipped.end()) continue;
+    if (!into.emplace(child.name, child.value).second)
+      return mdl_failure(
+          file, child.line,
+          "'" + child.name + "' given twice in '" + section.name + "' (line " + std::to_string(section.line) + ")");
+  }
+  return done();
 }
 
 Failure mdl_failure(const std::string& file, int line, const std::string& message) {

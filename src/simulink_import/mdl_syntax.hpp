@@ -1,6 +1,8 @@
 #pragma once
 // The nested-brace grammar of a classic .mdl file, without meaning: sections `Name { ... }` and pairs `Name value`.
 
+#include <initializer_list>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -27,6 +29,11 @@ inline constexpr int max_mdl_nesting = 200;
 const MdlNode* find_pair(const MdlNode& section, std::string_view name);
 // The value of that pair, or empty.
 std::string pair_value(const MdlNode& section, std::string_view name);
+
+// The pairs of a section into a map, keeping each as stored; a name given twice is an error (the later value would
+// silently replace the first). Pairs without a name and the pairs named in `skipped` are left out.
+Status add_mdl_pairs(const MdlNode& section, std::map<std::string, std::string>& into, const std::string& file,
+                     std::initializer_list<std::string_view> skipped = {});
 
 // "model.mdl:12: message": the form of every message the reader gives.
 Failure mdl_failure(const std::string& file, int line, const std::string& message);

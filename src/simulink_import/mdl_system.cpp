@@ -1,6 +1,5 @@
 #include "mdl_system.hpp"
 
-#include <algorithm>
 #include <charconv>
 #include <map>
 #include <optional>
@@ -172,19 +171,6 @@ class LineReader {
 };
 
 }  // namespace
-
-Status add_mdl_pairs(const MdlNode& section, std::map<std::string, std::string>& into, const std::string& file,
-                     std::initializer_list<std::string_view> skipped) {
-  for (const MdlNode& child : section.children) {
-    if (child.is_section || child.name.empty()) continue;
-    if (std::find(skipped.begin(), skipped.end(), child.name) != skipped.end()) continue;
-    if (!into.emplace(child.name, child.value).second)
-      return mdl_failure(
-          file, child.line,
-          "'" + child.name + "' given twice in '" + section.name + "' (line " + std::to_string(section.line) + ")");
-  }
-  return done();
-}
 
 Result<System> read_mdl_system(const MdlNode& section, const std::string& path, const std::string& file) {
   System system;
