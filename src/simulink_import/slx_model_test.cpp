@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "duet/fmi/archive_writer.hpp"
+#include "duet/simulink_import/simulink_file.hpp"
 #include "duet/simulink_import/slx_parts.hpp"
 #include "duet/support/temporary_folder.hpp"
 #include "duet/support/text_file.hpp"
@@ -149,6 +150,32 @@ TEST(SlxParts, APackagedTextMdlCarriesTheSamePartsAsText) {
   EXPECT_EQ(model.value().release, "R2025b");
   ASSERT_EQ(model.value().root.blocks.size(), 3U);
   EXPECT_EQ(model.value().root.blocks[1].parameters.at("Gain"), "0.8");
+}
+
+// The container is told by its bytes, not by its name.
+TEST(SimulinkFile, EachContainerIsToldByItsBytes) {
+  auto folder = TemporaryFolder::make("simulink_file_test_").value();
+  std::vector<fmi::ArchiveInput> inputs;
+  for (const auto& [name, text] : parts_of(testing / "slx_r2019b")) inputs.push_back({name, text});
+  const std::filesystem::path slx = folder.path() / "tilt_loop.mdl";  // a misnamed .slx
+  ASSERT_TRUE(fmi::write_archive(slx, inputs));
+  auto zipped = read_simulink_file(slx);
+  ASSERT_TRUE(zipped) << zipped.error();
+  EXPECT_EQ(zipped.value().format, "slx (blockdiagram.xml)");
+  EXPECT_EQ(zipped.value().root.blocks.size(), 8U);
+
+  auto packaged = read_simulink_file(testing / "packaged_r2025b.mdl");
+  ASSERT_TRUE(packaged) << packaged.error();
+  EXPECT_EQ(packaged.value().format, "mdl (packaged text)");
+  EXPECT_EQ(packaged.value().name, "velo_pi");
+
+  auto classic = read_simulink_file(testing / "controller.mdl");
+  ASSERT_TRUE(classic) << classic.error();
+  EXPECT_EQ(classic.value().format, "mdl (classic)");
+
+  auto missing = read_simulink_file(folder.path() / "none.slx");
+  ASSERT_FALSE(missing);
+  EXPECT_NE(missing.error().find("none.slx"), std::string::npos) << missing.error();
 }
 
 struct BrokenPackage {
