@@ -83,14 +83,15 @@ class Parser {
     return left;
   }
 
-  Value unary() {
+  // A sign applies to what follows: a whole power term (-2^2 is -4), or, right after ^, the exponent alone (2^-1).
+  Value unary(bool exponent = false) {
     if (is_symbol(peek(), "-") || is_symbol(peek(), "+")) {
       const Token sign = take();
       const Nesting nesting{*this, sign};
-      const Value operand = unary();
+      const Value operand = unary(exponent);
       return checked(sign, sign.text == "-" ? negate(operand) : unary_plus(operand));
     }
-    return postfix();
+    return exponent ? primary() : postfix();
   }
 
   Value postfix() {
@@ -99,24 +100,14 @@ class Parser {
       if (is_symbol(peek(), "'") || is_symbol(peek(), ".'")) {
         take();
         value = transpose(value);
-      } else if ((is_symbol(peek(), "^") || is_symbol(peek(), ".^"))) {
+      } else if (is_symbol(peek(), "^") || is_symbol(peek(), ".^")) {
         const Token op = take();
-        const Value exponent = power_operand();
+        const Value exponent = unary(true);
         value = checked(op, apply_operator(op.text, value, exponent));
       } else {
         return value;
       }
     }
-  }
-
-  Value power_operand() {
-    if (is_symbol(peek(), "-") || is_symbol(peek(), "+")) {
-      const Token sign = take();
-      const Nesting nesting{*this, sign};
-      const Value operand = power_operand();
-      return checked(sign, sign.text == "-" ? negate(operand) : unary_plus(operand));
-    }
-    return primary();
   }
 
   Value primary() {
