@@ -5,6 +5,7 @@
 #include "a2l_command.hpp"
 #include "design_command.hpp"
 #include "fmu_command.hpp"
+#include "import_command.hpp"
 #include "gen_command.hpp"
 #include "mdf_command.hpp"
 #include "model_command.hpp"
@@ -36,6 +37,7 @@ constexpr Subcommand table[] = {
     {"a2l", "Check A2L files against ASAP2 1.71 and XCP's IF_DATA", define_a2l_command},
     {"mdf", "Describe an ASAM MDF 4 measurement file, export its channels as CSV", define_mdf_command},
     {"fmu", "Describe an FMI co-simulation FMU (FMI 2.0 or 3.0)", define_fmu_command},
+    {"import", "Bring a Simulink model (.slx, .mdl) over as a duet model", define_import_command},
 };
 
 }  // namespace

@@ -14,22 +14,12 @@
 #include "duet/simulink_import/slx_parts.hpp"
 #include "duet/support/temporary_folder.hpp"
 #include "duet/support/text_file.hpp"
+#include "testing/package_folder.hpp"
 
 namespace duet::simulink_import {
 namespace {
 
 const std::filesystem::path testing = DUET_SIMULINK_TESTING_DIR;
-
-// A package's parts from a folder of its files, as the zip would hold them.
-Parts parts_of(const std::filesystem::path& folder) {
-  Parts parts;
-  for (const auto& entry : std::filesystem::recursive_directory_iterator(folder)) {
-    if (!entry.is_regular_file()) continue;
-    parts[std::filesystem::relative(entry.path(), folder).generic_string()] =
-        read_text_file(entry.path().string()).value();
-  }
-  return parts;
-}
 
 const Block& block(const System& system, const std::string& name) {
   for (const Block& each : system.blocks)

@@ -1,0 +1,85 @@
+// `duet import simulink` as a user types it: a model imported with its variables and its report, one refused with
+// every reason, and command lines it refuses.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "duet/fmi/archive_writer.hpp"
+#include "duet/support/temporary_folder.hpp"
+#include "duet/support/text_file.hpp"
+#include "run_for_test.hpp"
+
+namespace duet::cli {
+namespace {
+
+using ::testing::HasSubstr;
+
+const std::filesystem::path testing = DUET_SOURCE_DIR "/src/simulink_import/testing";
+
+// The hand-written R2019b package zipped into an .slx, as Simulink saves it.
+std::filesystem::path tilt_loop_slx(const std::filesystem::path& folder) {
+  const std::filesystem::path parts = testing / "slx_r2019b";
+  std::vector<fmi::ArchiveInput> inputs;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(parts)) {
+    if (!entry.is_regular_file()) continue;
+    inputs.push_back({std::filesystem::relative(entry.path(), parts).generic_string(), entry.path()});
+  }
+  const std::filesystem::path slx = folder / "tilt_loop.slx";
+  EXPECT_TRUE(fmi::write_archive(slx, inputs));
+  return slx;
+}
+
+TEST(ImportCommand, AModelWithItsVariablesIsWrittenCheckedAndReported) {
+  auto folder = TemporaryFolder::make("import_command_test_").value();
+  const std::filesystem::path variables = folder.path() / "parameters.m";
+  std::ofstream{variables} << "% the controller's parameters\nTs = 0.01;  % s\nKp = 2;\n";
+  const std::string output = (folder.path() / "tilt_loop.yaml").string();
+  const Outcome outcome = run({"import", "simulink", tilt_loop_slx(folder.path()).string(), "--variables",
+                               variables.string(), "-o", output, "--report"});
+  ASSERT_EQ(outcome.exit_code, ExitCode::success) << outcome.err;
+  EXPECT_EQ(outcome.err, "");
+  EXPECT_THAT(outcome.out, HasSubstr("  ok       tilt_loop/Proportional Gain (Gain): Gain k: Kp\n"));
+  EXPECT_THAT(outcome.out, HasSubstr("11 of 11 blocks imported\n"));
+  EXPECT_THAT(outcome.out, HasSubstr("imported tilt_loop (slx (blockdiagram.xml)) as " + output + "\n"));
+  EXPECT_THAT(read_text_file(output).value(), HasSubstr("  Kp: {value: 2, "));
+  // The model checks, and simulates like any other.
+  const Outcome simulated =
+      run({"sim", output, "--duration", "0.05", "--csv", (folder.path() / "t.csv").string(), "--no-plot"});
+  EXPECT_EQ(simulated.exit_code, ExitCode::success) << simulated.err;
+}
+
+TEST(ImportCommand, WithoutItsVariablesNothingIsWrittenAndEveryProblemIsSaid) {
+  auto folder = TemporaryFolder::make("import_command_test_").value();
+  const std::string output = (folder.path() / "tilt_loop.yaml").string();
+  const Outcome outcome = run({"import", "simulink", tilt_loop_slx(folder.path()).string(), "-o", output});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err,
+            "duet import simulink: tilt_loop: the fixed step 'Ts' cannot be evaluated: column 1: unresolved name "
+            "'Ts'; give --variables or --base-period-us\n"
+            "duet import simulink: nothing written: 1 problem(s) (--report lists every block with its verdict)\n");
+  EXPECT_FALSE(std::filesystem::exists(output));
+
+  const Outcome no_gain =
+      run({"import", "simulink", tilt_loop_slx(folder.path()).string(), "--base-period-us", "10000", "-o", output});
+  EXPECT_EQ(no_gain.exit_code, ExitCode::failure);
+  EXPECT_THAT(no_gain.err, HasSubstr("duet import simulink: tilt_loop/Proportional\nGain (Gain): 'Kp': column 1: "
+                                     "unresolved name 'Kp'\n"));
+}
+
+TEST(ImportCommand, BadCommandLines) {
+  const Outcome interrupt =
+      run({"import", "simulink", (testing / "controller.mdl").string(), "-o", "x.yaml", "--interrupt", "model/ISR"});
+  EXPECT_EQ(interrupt.exit_code, ExitCode::usage);
+  EXPECT_EQ(interrupt.err,
+            "duet import simulink: --interrupt 'model/ISR': write BLOCK_PATH=IRQ:PRIORITY (model/ISR=TIM2:3)\n");
+  const Outcome variables = run({"import", "simulink", (testing / "controller.mdl").string(), "-o", "x.yaml",
+                                 "--variables", (testing / "controller.mdl").string()});
+  EXPECT_EQ(variables.exit_code, ExitCode::failure);
+  EXPECT_THAT(variables.err, HasSubstr("variables come from a .m script or a .yaml file"));
+}
+
+}  // namespace
+}  // namespace duet::cli

@@ -1,0 +1,342 @@
+// One mapping per Simulink block type the importer brings over (docs/IMPORT.md, "Blocks"): each checks that every
+// option the block has is one whose semantics duet's block has exactly, and refuses otherwise, naming the option.
+
+#include <map>
+#include <string_view>
+
+#include "import_context.hpp"
+
+namespace duet::simulink_import {
+namespace {
+
+std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+
+// Input ports u1..un of a variadic duet block.
+std::optional<TextPairs> numbered_inputs(ImportContext& context, std::size_t count) {
+  TextPairs inputs;
+  for (std::size_t port = 1; port <= count; ++port) {
+    const auto signal = context.input(port);
+    if (!signal) return std::nullopt;
+    inputs.emplace_back("u" + std::to_string(port), *signal);
+  }
+  return inputs;
+}
+
+// A block of one input u and one output y, its parameters given, at its SampleTime when it has one.
+void unary(ImportContext& context, const std::string& type, TextPairs parameters, bool sampled,
+           const std::string& what) {
+  const auto u = context.input(1);
+  const auto period = sampled ? context.period() : std::optional<std::string>{std::string{}};
+  if (!u || !period || context.refused()) return;
+  context.emit({.type = type,
+                .parameters = std::move(parameters),
+                .inputs = {{"u", *u}},
+                .outputs = {{"y", context.output(1)}},
+                .period = *period},
+               what);
+}
+
+// The signs of a Sum ("|+-", "++" or a count) or a Product ("*/" or a count), `|` being only the icon's spacing.
+std::optional<std::string> signs(ImportContext& context, char sign_of_count) {
+  const auto text = context.raw("Inputs");
+  if (!text) return std::nullopt;
+  std::string signs;
+  if (!text->empty() && (*text)[0] >= '0' && (*text)[0] <= '9') {
+    const auto count = context.scalar("Inputs");
+    if (!count) return std::nullopt;
+    signs.assign(static_cast<std::size_t>(*count), sign_of_count);
+  } else {
+    for (const char c : *text)
+      if (c != '|') signs += c;
+  }
+  if (signs.size() < 2) {
+    context.refuse("one input (Inputs '" + *text + "') combines its elements, which duet's " +
+                   (sign_of_count == '+' ? "Sum" : "Product") + " does not: use two inputs or a Mux");
+    return std::nullopt;
+  }
+  return signs;
+}
+
+void constant(ImportContext& context) {
+  const auto value = context.parameter("Value");
+  const auto evaluated = context.value("Value");
+  const auto type_text = context.raw("OutDataTypeStr");
+  const auto period = context.period();
+  if (!value || !evaluated || !type_text || !period) return;
+  TextPairs parameters{{"value", *value}};
+  std::string type;
+  if (*type_text == "Inherit: Inherit from 'Constant value'") {
+    if (evaluated->type != MatlabClass::double_class) type = std::string{class_name(evaluated->type)};
+  } else if (*type_text != "double") {
+    type = *type_text;
+  }
+  if (type == "logical") type = "boolean";
+  if (!type.empty()) parameters.emplace_back("type", type);
+  context.emit({.type = "Constant", .parameters = parameters, .outputs = {{"y", context.output(1)}}, .period = *period},
+               "Constant " + *value);
+}
+
+void gain(ImportContext& context) {
+  if (!context.require("Multiplication", "Element-wise(K.*u)",
+                       "only the element-wise gain has duet's Gain's semantics (a matrix gain: MatrixMultiply)"))
+    return;
+  const auto k = context.parameter("Gain");
+  if (!k) return;
+  unary(context, "Gain", {{"k", *k}}, true, "Gain k: " + *k);
+}
+
+void sum(ImportContext& context) {
+  const auto sum_signs = signs(context, '+');
+  if (!sum_signs) return;
+  const auto inputs = numbered_inputs(context, sum_signs->size());
+  const auto period = context.period();
+  if (!inputs || !period) return;
+  context.emit({.type = "Sum",
+                .parameters = {{"signs", quoted(*sum_signs)}},
+                .inputs = *inputs,
+                .outputs = {{"y", context.output(1)}},
+                .period = *period},
+               "Sum " + *sum_signs);
+}
+
+void product(ImportContext& context) {
+  if (!context.require("Multiplication", "Element-wise(.*)", "only the element-wise product is duet's Product")) return;
+  const auto product_signs = signs(context, '*');
+  if (!product_signs) return;
+  const auto inputs = numbered_inputs(context, product_signs->size());
+  const auto period = context.period();
+  if (!inputs || !period) return;
+  context.emit({.type = "Product",
+                .parameters = {{"signs", quoted(*product_signs)}},
+                .inputs = *inputs,
+                .outputs = {{"y", context.output(1)}},
+                .period = *period},
+               "Product " + *product_signs);
+}
+
+void abs(ImportContext& context) { unary(context, "Abs", {}, false, "Abs"); }
+void sign(ImportContext& context) { unary(context, "Sign", {}, false, "Sign"); }
+
+void saturation(ImportContext& context) {
+  for (const char* source : {"UpperLimitSource", "LowerLimitSource"}) {
+    if (context.block().parameters.count(source) != 0 &&
+        !context.require(source, "Dialog", "limits from input ports are not duet's Saturation's"))
+      return;
+  }
+  const auto upper = context.parameter("UpperLimit");
+  const auto lower = context.parameter("LowerLimit");
+  if (!upper || !lower) return;
+  unary(context, "Saturation", {{"lower", *lower}, {"upper", *upper}}, false,
+        "Saturation [" + *lower + ", " + *upper + "]");
+}
+
+void unit_delay(ImportContext& context) {
+  const auto initial = context.parameter("InitialCondition");
+  if (!initial) return;
+  unary(context, "UnitDelay", {{"initial", *initial}}, true, "UnitDelay from " + *initial);
+}
+
+void discrete_integrator(ImportContext& context) {
+  if (!context.require("IntegratorMethod", "Integration: Forward Euler",
+                       "duet's DiscreteIntegrator integrates by forward Euler only") ||
+      !context.require("ExternalReset", "none", "duet's DiscreteIntegrator has no external reset") ||
+      !context.require("InitialConditionSource", "internal", "the initial condition must be the block's own") ||
+      !context.require("ShowSaturationPort", "off", "duet's DiscreteIntegrator has no saturation port") ||
+      !context.require("ShowStatePort", "off", "duet's DiscreteIntegrator has no state port"))
+    return;
+  TextPairs parameters;
+  const auto gain_value = context.parameter("gainval");
+  const auto initial = context.parameter("InitialCondition");
+  const auto limited = context.raw("LimitOutput");
+  if (!gain_value || !initial || !limited) return;
+  parameters = {{"gain", *gain_value}, {"initial", *initial}};
+  if (*limited == "on") {
+    const auto lower = context.parameter("LowerSaturationLimit");
+    const auto upper = context.parameter("UpperSaturationLimit");
+    if (!lower || !upper) return;
+    parameters.emplace_back("lower", *lower);
+    parameters.emplace_back("upper", *upper);
+  }
+  unary(context, "DiscreteIntegrator", parameters, true, "DiscreteIntegrator (forward Euler)");
+}
+
+void ground(ImportContext& context) {
+  context.emit({.type = "Constant", .parameters = {{"value", "0"}}, .outputs = {{"y", context.output(1)}}},
+               "Constant 0");
+}
+
+// Nothing: duet needs no sink for a signal nobody reads.
+void terminator(ImportContext& context) { (void)context.input(1); }
+
+void switch_block(ImportContext& context) {
+  const auto criteria = context.raw("Criteria");
+  if (!criteria) return;
+  std::string comparison;
+  std::optional<std::string> threshold = std::string{"0"};
+  if (*criteria == "u2 >= Threshold") {
+    comparison = ">=";
+    threshold = context.parameter("Threshold");
+  } else if (*criteria == "u2 > Threshold") {
+    comparison = ">";
+    threshold = context.parameter("Threshold");
+  } else if (*criteria == "u2 ~= 0") {
+    comparison = "!=";
+  } else {
+    context.refuse("Criteria '" + *criteria + "' is not one duet knows");
+    return;
+  }
+  const auto on = context.input(1);
+  const auto control = context.input(2);
+  const auto off = context.input(3);
+  if (!threshold || !on || !control || !off) return;
+  const std::string condition = context.new_signal_name(context.block_name + "_condition");
+  context.emit({.name = context.new_block_name(context.block_name + "_criteria"),
+                .type = "Compare",
+                .parameters = {{"operator", quoted(comparison)}, {"value", *threshold}},
+                .inputs = {{"u", *control}},
+                .outputs = {{"y", condition}}},
+               "Compare u2 " + comparison + " " + *threshold);
+  context.emit({.type = "Switch",
+                .inputs = {{"on", *on}, {"condition", condition}, {"off", *off}},
+                .outputs = {{"y", context.output(1)}}},
+               "Switch");
+}
+
+void logic(ImportContext& context) {
+  const auto operation = context.raw("Operator");
+  if (!operation) return;
+  if (*operation == "NOT") {
+    unary(context, "Not", {}, false, "Not");
+    return;
+  }
+  if (*operation != "AND" && *operation != "OR" && *operation != "XOR" && *operation != "NAND" && *operation != "NOR") {
+    context.refuse("Operator " + *operation + " is not one of duet's Logic (AND, OR, XOR, NAND, NOR, NOT)");
+    return;
+  }
+  const auto count = context.scalar("Inputs");
+  if (!count) return;
+  const auto inputs = numbered_inputs(context, static_cast<std::size_t>(*count));
+  if (!inputs) return;
+  context.emit({.type = "Logic",
+                .parameters = {{"operator", *operation}},
+                .inputs = *inputs,
+                .outputs = {{"y", context.output(1)}}},
+               "Logic " + *operation);
+}
+
+void min_max(ImportContext& context) {
+  const auto function = context.raw("Function");
+  const auto count = context.scalar("Inputs");
+  if (!function || !count) return;
+  if (*count < 2) {
+    context.refuse("one input takes the extreme of its elements, which duet's MinMax does not");
+    return;
+  }
+  const auto inputs = numbered_inputs(context, static_cast<std::size_t>(*count));
+  if (!inputs) return;
+  context.emit({.type = "MinMax",
+                .parameters = {{"function", *function}},
+                .inputs = *inputs,
+                .outputs = {{"y", context.output(1)}}},
+               "MinMax " + *function);
+}
+
+void compare_to_constant(ImportContext& context) {
+  const auto relop = context.raw("relop");
+  const auto constant_value = context.parameter("const");
+  if (!relop || !constant_value) return;
+  const std::string operation = *relop == "~=" ? "!=" : *relop;
+  unary(context, "Compare", {{"operator", quoted(operation)}, {"value", *constant_value}}, false,
+        "Compare " + operation + " " + *constant_value);
+}
+
+// The Discrete PID Controller (a library link, SourceType "PID 1dof"), for the options duet's DiscretePid has.
+void pid(ImportContext& context) {
+  if (!context.require("TimeDomain", "Discrete-time", "a continuous-time PID is not discrete") ||
+      !context.require("Form", "Parallel", "duet's DiscretePid is the parallel form") ||
+      !context.require("IntegratorMethod", "Forward Euler", "duet's DiscretePid integrates by forward Euler") ||
+      !context.require("ControllerParametersSource", "internal", "gains from ports: not imported yet") ||
+      !context.require("ExternalReset", "none", "an external reset is not imported yet") ||
+      !context.require("InitialConditionSource", "internal", "the initial conditions must be the block's own") ||
+      !context.require("TrackingMode", "off", "duet's DiscretePid has no tracking mode"))
+    return;
+  const auto controller = context.raw("Controller");
+  if (!controller) return;
+  const bool has_i = controller->find('I') != std::string::npos;
+  const bool has_d = controller->find('D') != std::string::npos;
+  TextPairs parameters;
+  const auto p = context.parameter("P");
+  if (!p) return;
+  parameters.emplace_back("p", *p);
+  if (has_i) {
+    const auto i = context.parameter("I");
+    if (!i || !context.require("InitialConditionForIntegrator", "0", "duet's integrator starts at 0")) return;
+    parameters.emplace_back("i", *i);
+  } else {
+    parameters.emplace_back("i", "0");
+  }
+  if (has_d) {
+    const auto d = context.parameter("D");
+    if (!d || !context.require("UseFilter", "on", "duet's derivative is always filtered") ||
+        !context.require("FilterMethod", "Forward Euler", "duet's derivative filter is forward Euler") ||
+        !context.require("InitialConditionForFilter", "0", "duet's filter starts at 0"))
+      return;
+    const auto n = context.parameter("N");
+    if (!n) return;
+    parameters.emplace_back("d", *d);
+    parameters.emplace_back("n", *n);
+  } else {
+    parameters.emplace_back("d", "0");
+  }
+  const auto limited = context.raw("LimitOutput");
+  if (!limited) return;
+  if (*limited == "on") {
+    const auto lower = context.parameter("LowerSaturationLimit");
+    const auto upper = context.parameter("UpperSaturationLimit");
+    const auto anti_windup = context.raw("AntiWindupMode");
+    if (!lower || !upper || !anti_windup) return;
+    if (*anti_windup != "none" && *anti_windup != "clamping") {
+      context.refuse("AntiWindupMode " + *anti_windup + ": duet's DiscretePid clamps or does nothing");
+      return;
+    }
+    parameters.emplace_back("lower", *lower);
+    parameters.emplace_back("upper", *upper);
+    parameters.emplace_back("anti_windup", *anti_windup);
+  }
+  const auto error = context.input(1);
+  const auto period = context.period();
+  if (!error || !period) return;
+  context.emit({.type = "DiscretePid",
+                .parameters = parameters,
+                .inputs = {{"error", *error}},
+                .outputs = {{"y", context.output(1)}},
+                .period = *period},
+               "DiscretePid (" + *controller + ")");
+}
+
+}  // namespace
+
+BlockMapping mapping_for(const std::string& type) {
+  static const std::map<std::string, BlockMapping, std::less<>> mappings{
+      {"Constant", constant},
+      {"Gain", gain},
+      {"Sum", sum},
+      {"Product", product},
+      {"Abs", abs},
+      {"Signum", sign},
+      {"Saturate", saturation},
+      {"UnitDelay", unit_delay},
+      {"DiscreteIntegrator", discrete_integrator},
+      {"Ground", ground},
+      {"Terminator", terminator},
+      {"Switch", switch_block},
+      {"Logic", logic},
+      {"MinMax", min_max},
+      {"Compare To Constant", compare_to_constant},
+      {"PID 1dof", pid},
+  };
+  const auto found = mappings.find(type);
+  return found == mappings.end() ? nullptr : found->second;
+}
+
+}  // namespace duet::simulink_import

@@ -1,0 +1,534 @@
+#include "duet/simulink_import/import.hpp"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <set>
+#include <tuple>
+
+#include "import_context.hpp"
+
+namespace duet::simulink_import {
+namespace {
+
+// A duet identifier from a Simulink name: letters, digits and '_' kept, anything else one '_'.
+std::string identifier(std::string_view name) {
+  std::string text;
+  for (const char c : name) {
+    const bool word = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    if (word) {
+      text += c;
+    } else if (!text.empty() && text.back() != '_') {
+      text += '_';
+    }
+  }
+  while (!text.empty() && text.back() == '_') text.pop_back();
+  if (text.empty() || (text[0] >= '0' && text[0] <= '9')) text = "b_" + text;
+  return text;
+}
+
+// Names unique within one duet subsystem: a second "gain" becomes "gain_2".
+class Names {
+ public:
+  std::string unique(const std::string& stem) {
+    std::string name = stem;
+    for (int n = 2; !used_.insert(name).second; ++n) name = stem + "_" + std::to_string(n);
+    return name;
+  }
+
+ private:
+  std::set<std::string> used_;
+};
+
+std::string number_text(double value) {
+  if (std::isinf(value)) return value > 0 ? ".inf" : "-.inf";
+  if (std::isnan(value)) return ".nan";
+  std::array<char, 32> text{};
+  char* const end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
+  return std::string(text.data(), end);
+}
+
+// A value as YAML: a number, a list for a vector, a list of rows for a matrix.
+std::string value_text(const Value& value) {
+  const auto row = [&value](std::size_t r) {
+    std::string text = "[";
+    for (std::size_t c = 0; c < value.columns; ++c) text += (c == 0 ? "" : ", ") + number_text(value.at(r, c));
+    return text + "]";
+  };
+  if (value.is_scalar()) return number_text(value.elements.front());
+  if (value.rows == 1) return row(0);
+  if (value.columns == 1) {
+    std::string text = "[";
+    for (std::size_t r = 0; r < value.rows; ++r) text += (r == 0 ? "" : ", ") + number_text(value.at(r, 0));
+    return text + "]";
+  }
+  std::string text = "[";
+  for (std::size_t r = 0; r < value.rows; ++r) text += (r == 0 ? "" : ", ") + row(r);
+  return text + "]";
+}
+
+bool is_variable_path(std::string_view text) {
+  if (text.empty()) return false;
+  bool at_start = true;
+  for (const char c : text) {
+    const bool letter = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '_';
+    const bool digit = c >= '0' && c <= '9';
+    if (c == '.') {
+      if (at_start) return false;
+      at_start = true;
+    } else if (letter || (digit && !at_start)) {
+      at_start = false;
+    } else {
+      return false;
+    }
+  }
+  return !at_start;
+}
+
+std::string trimmed(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t\n");
+  if (first == std::string::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t\n") - first + 1);
+}
+
+class Importer final : public ImportModel {
+ public:
+  Importer(const SimulinkModel& model, const ImportOptions& options) : model_(model), options_(options) {}
+
+  ImportResult run() {
+    duet_.name = identifier(model_.name);
+    duet_.description = "Imported from the Simulink model " + model_.name +
+                        (model_.release.empty() ? "" : " (" + model_.release + ")") + " by duet import simulink";
+    if (!solver()) return finish();
+    duet_.base_period_us = base_period_us_;
+    duet_.blocks = import_system(model_.root, model_.name, options_.variables, true, {}, {});
+    return finish();
+  }
+
+  std::optional<std::string> parameter_text(ImportContext& context, const std::string& expression) override {
+    const std::string text = trimmed(expression);
+    auto evaluated = evaluate(text, context.workspace());
+    if (!evaluated) {
+      context.refuse("'" + text + "': " + evaluated.error());
+      return std::nullopt;
+    }
+    if (evaluated.value().is_struct) {
+      context.refuse("'" + text + "' is a struct, not a number");
+      return std::nullopt;
+    }
+    // A variable of the --variables files, not shadowed by a mask's: a model parameter of its name, tunable.
+    const std::string root = text.substr(0, text.find('.'));
+    const auto variable = options_.variables.find(root);
+    const auto seen = context.workspace().find(root);  // a mask's parameter of the same name shadows it
+    const bool from_variables = is_variable_path(text) && variable != options_.variables.end() &&
+                                seen != context.workspace().end() && seen->second == variable->second &&
+                                evaluated.value().type == MatlabClass::double_class;
+    if (!from_variables) return value_text(evaluated.value());
+    std::string name = identifier(text);
+    if (parameter_names_.insert(name).second) {
+      duet_.parameters.push_back({.name = name,
+                                  .value = value_text(evaluated.value()),
+                                  .type = {},
+                                  .source = "the Simulink variable " + text + ", first used by " + context.path()});
+    }
+    return name;
+  }
+  [[nodiscard]] long long base_period_us() const override { return base_period_us_; }
+  [[nodiscard]] const SimulinkModel& source() const override { return model_; }
+
+ private:
+  ImportResult finish() {
+    if (result_.problems.empty()) result_.model_text = duet_model_text(duet_);
+    return std::move(result_);
+  }
+
+  void problem(const std::string& text) { result_.problems.push_back(text); }
+
+  // A fixed-step solver, and the base period: --base-period-us, or the solver's fixed step.
+  bool solver() {
+    const auto& settings = model_.solver.parameters;
+    const auto setting = [&settings](const char* name) {
+      const auto found = settings.find(name);
+      return found == settings.end() ? std::string{} : found->second;
+    };
+    std::string name = setting("SolverName");
+    if (name.empty()) name = setting("Solver");
+    const bool fixed = name.empty() || name.starts_with("FixedStep") || name == "ode1" || name == "ode2" ||
+                       name == "ode3" || name == "ode4" || name == "ode5" || name == "ode8" || name == "ode14x" ||
+                       name == "ode1be";
+    if (!fixed) {
+      problem(model_.name + ": the solver " + name +
+              " is variable-step; duet runs fixed-step discrete models (set a fixed-step solver in Simulink)");
+      return false;
+    }
+    if (options_.base_period_us) {
+      base_period_us_ = *options_.base_period_us;
+      return true;
+    }
+    const std::string step = trimmed(setting("FixedStep"));
+    if (step.empty() || step == "auto") {
+      problem(model_.name + ": the fixed step is '" + (step.empty() ? "not in the file" : step) +
+              "'; give the base period with --base-period-us");
+      return false;
+    }
+    auto seconds = evaluate(step, options_.variables);
+    if (!seconds || !seconds.value().is_scalar() || !(seconds.value().elements.front() > 0)) {
+      problem(model_.name + ": the fixed step '" + step + "' " +
+              (seconds ? std::string{"is not a positive number"} : "cannot be evaluated: " + seconds.error()) +
+              "; give --variables or --base-period-us");
+      return false;
+    }
+    const double microseconds = seconds.value().elements.front() * 1e6;
+    base_period_us_ = std::llround(microseconds);
+    if (base_period_us_ < 1 || std::fabs(microseconds - static_cast<double>(base_period_us_)) > 1e-6 * microseconds) {
+      problem(model_.name + ": the fixed step " + step + " s is not a whole number of microseconds");
+      return false;
+    }
+    return true;
+  }
+
+  // The signal each output port drives, by (block, port); and the source feeding each input port.
+  struct Wiring {
+    std::map<std::pair<std::string, int>, std::string> driven;  // (block, out port) -> signal
+    std::map<std::tuple<std::string, std::string, int>, std::pair<std::string, int>> fed;  // (block, kind, port)
+  };
+
+  Wiring wire(const System& system, const std::string& path, Names& signals) {
+    Wiring wiring;
+    std::map<std::string, const Block*> blocks;
+    for (const Block& block : system.blocks) blocks[block.name] = &block;
+    for (const Line& line : system.lines) {
+      if (!line.source) continue;
+      const std::pair key{line.source->block, line.source->port};
+      if (wiring.driven.count(key) == 0) {
+        const Block& source = *blocks.at(line.source->block);
+        std::string stem = identifier(line.name);
+        if (line.name.empty()) {
+          const auto named = source.output_names.find(line.source->port);
+          stem = named != source.output_names.end()
+                     ? identifier(named->second)
+                     : identifier(source.name) +
+                           (line.source->port > 1 ? "_" + std::to_string(line.source->port) : std::string{});
+        }
+        wiring.driven[key] = signals.unique(stem);
+      }
+      for (const Endpoint& destination : line.destinations) {
+        const auto [at, fresh] = wiring.fed.emplace(std::tuple{destination.block, destination.kind, destination.port},
+                                                    std::pair{line.source->block, line.source->port});
+        if (!fresh && at->second != key) {
+          problem(path + "/" + destination.block + ": its " + destination.kind + " port " +
+                  std::to_string(destination.port) + " has two sources");
+        }
+      }
+    }
+    return wiring;
+  }
+
+  // The blocks of one system. A subsystem's Inport and Outport blocks become its inputs and outputs; at the root
+  // they are the model's side of resources a plant answers (PlantInput "inport:NAME", PlantOutput "outport:NAME").
+  std::vector<DuetBlock> import_system(const System& system, const std::string& path, const Workspace& workspace,
+                                       bool root, TextPairs* subsystem_inputs, TextPairs* subsystem_outputs) {
+    Names signals;
+    Names names;
+    const Wiring wiring = wire(system, path, signals);
+    // A From block reads what the Goto of its tag is fed with (local tags only).
+    std::map<std::string, std::pair<std::string, int>> goto_sources;
+    for (const Block& block : system.blocks) {
+      if (block.type != "Goto") continue;
+      const auto fed = wiring.fed.find({block.name, "in", 1});
+      if (fed != wiring.fed.end())
+        goto_sources[trimmed(block.parameters.count("GotoTag") ? block.parameters.at("GotoTag") : "A")] = fed->second;
+    }
+    const auto signal_of = [&](std::pair<std::string, int> source) -> std::string {
+      for (int hops = 0; hops < 100; ++hops) {
+        const auto block = std::find_if(system.blocks.begin(), system.blocks.end(),
+                                        [&](const Block& each) { return each.name == source.first; });
+        if (block == system.blocks.end() || block->type != "From") break;
+        const std::string tag = trimmed(block->parameters.count("GotoTag") ? block->parameters.at("GotoTag") : "A");
+        const auto found = goto_sources.find(tag);
+        if (found == goto_sources.end()) return {};
+        source = found->second;
+      }
+      const auto driven = wiring.driven.find(source);
+      return driven == wiring.driven.end() ? std::string{} : driven->second;
+    };
+    const auto input_signals = [&](const Block& block, const std::string& kind) {
+      std::vector<std::string> inputs;
+      for (const auto& [key, source] : wiring.fed) {
+        if (std::get<0>(key) != block.name || std::get<1>(key) != kind) continue;
+        const auto port = static_cast<std::size_t>(std::get<2>(key));
+        if (inputs.size() < port) inputs.resize(port);
+        inputs[port - 1] = signal_of(source);
+      }
+      return inputs;
+    };
+    const auto output_signals = [&](const Block& block) {
+      std::vector<std::string> outputs;
+      for (const auto& [key, signal] : wiring.driven) {
+        if (key.first != block.name) continue;
+        if (outputs.size() < static_cast<std::size_t>(key.second)) outputs.resize(static_cast<std::size_t>(key.second));
+        outputs[static_cast<std::size_t>(key.second) - 1] = signal;
+      }
+      return outputs;
+    };
+
+    std::vector<DuetBlock> blocks;
+    for (const Block& block : system.blocks) {
+      const std::string block_path = path + "/" + block.name;
+      const std::vector<std::string> inputs = input_signals(block, "in");
+      const std::vector<std::string> outputs = output_signals(block);
+      Verdict verdict{.path = block_path, .type = block.type, .imported = false, .what = {}};
+      if (block.parameters.count("Commented") != 0 && block.parameters.at("Commented") != "off") {
+        verdict.what = "commented out (" + block.parameters.at("Commented") + "): refused, uncomment or delete it";
+        refuse(verdict);
+        continue;
+      }
+      if (block.type == "Inport" || block.type == "Outport") {
+        port_block(block, block_path, root, inputs, outputs, subsystem_inputs, subsystem_outputs, blocks, names,
+                   verdict);
+        continue;
+      }
+      if (block.type == "Goto" || block.type == "From") {
+        const bool local =
+            block.parameters.count("TagVisibility") == 0 || block.parameters.at("TagVisibility") == "local";
+        verdict.imported = local;
+        verdict.what =
+            local ? "joined to its tag's signal" : "a scoped or global tag: refused, use lines or local tags";
+        if (!local)
+          refuse(verdict);
+        else
+          result_.report.push_back(verdict);
+        continue;
+      }
+      if (block.type == "EnablePort" || block.type == "TriggerPort") {
+        verdict.imported = true;
+        verdict.what = "its subsystem's " + std::string{block.type == "EnablePort" ? "enable" : "trigger"};
+        result_.report.push_back(verdict);
+        continue;
+      }
+      if (block.type == "SubSystem") {
+        subsystem(block, block_path, workspace, inputs, outputs, input_signals(block, "enable"),
+                  input_signals(block, "trigger"), blocks, names, verdict);
+        continue;
+      }
+      const std::string type = block.type == "Reference" && block.parameters.count("SourceType") != 0
+                                   ? block.parameters.at("SourceType")
+                                   : block.type;
+      verdict.type = type;
+      const BlockMapping mapping = mapping_for(type);
+      if (mapping == nullptr) {
+        verdict.what = why_not(block, type);
+        refuse(verdict);
+        continue;
+      }
+      ImportContext context{*this, block, block_path, workspace, inputs, outputs};
+      context.block_name = names.unique(identifier(block.name));
+      context.set_namers([&names](const std::string& stem) { return names.unique(stem); },
+                         [&signals](const std::string& stem) { return signals.unique(stem); });
+      mapping(context);
+      if (context.refused()) {
+        verdict.what = context.reason();
+        refuse(verdict);
+        continue;
+      }
+      verdict.imported = true;
+      verdict.what = context.emitted().empty() ? "nothing to bring over" : context.what();
+      result_.report.push_back(verdict);
+      for (DuetBlock& made : context.emitted()) blocks.push_back(std::move(made));
+    }
+    return blocks;
+  }
+
+  void refuse(Verdict verdict) {
+    problem(verdict.path + " (" + verdict.type + "): " + verdict.what);
+    result_.report.push_back(std::move(verdict));
+  }
+
+  static std::string why_not(const Block& block, const std::string& type) {
+    if (block.type == "Reference") {
+      const std::string source = block.parameters.count("SourceBlock") ? block.parameters.at("SourceBlock") : "";
+      return "a link to the library block '" + source + "' (" + type +
+             "), which duet has no implementation of (docs/IMPORT.md lists the ones it has)";
+    }
+    if (block.type == "S-Function") return "an S-Function: its code is not in the model";
+    if (type == "Integrator" || type == "TransferFcn" || type == "StateSpace" || type == "Derivative" ||
+        type == "ZeroPole" || type == "TransportDelay") {
+      return "a continuous block: duet imports discrete models only (discretise it in Simulink)";
+    }
+    return "no duet block has the semantics of a " + type + " block (docs/IMPORT.md lists the ones it has)";
+  }
+
+  void port_block(const Block& block, const std::string& block_path, bool root, const std::vector<std::string>& inputs,
+                  const std::vector<std::string>& outputs, TextPairs* subsystem_inputs, TextPairs* subsystem_outputs,
+                  std::vector<DuetBlock>& blocks, Names& names, Verdict& verdict) {
+    const bool inport = block.type == "Inport";
+    const std::string port = block.parameters.count("Port") ? trimmed(block.parameters.at("Port")) : "1";
+    const std::string name = identifier(block.name);
+    if (inport && outputs.empty()) {
+      verdict.imported = true;
+      verdict.what = "unconnected";
+      result_.report.push_back(verdict);
+      return;
+    }
+    if (!inport && (inputs.empty() || inputs[0].empty())) {
+      verdict.what = "its input is not connected";
+      refuse(verdict);
+      return;
+    }
+    if (!inport && !root) {
+      const auto setting = [&block](const char* parameter, const char* otherwise) {
+        const auto found = block.parameters.find(parameter);
+        return found == block.parameters.end() ? std::string{otherwise} : trimmed(found->second);
+      };
+      if (setting("OutputWhenDisabled", "held") != "held" || setting("InitialOutput", "[]") != "[]") {
+        verdict.what =
+            "it resets or starts from an initial output while its subsystem is disabled; duet's "
+            "subsystems hold their outputs";
+        refuse(verdict);
+        return;
+      }
+    }
+    if (root) {
+      DuetBlock made{.name = names.unique(name), .type = inport ? "PlantInput" : "PlantOutput"};
+      made.parameters = {{"resource", yaml_string(std::string{inport ? "inport:" : "outport:"} + name)}};
+      if (inport)
+        made.outputs = {{"y", outputs[0]}};
+      else
+        made.inputs = {{"u", inputs[0]}};
+      made.source = block_path + " (" + block.type + " " + port + ")";
+      blocks.push_back(std::move(made));
+      verdict.imported = true;
+      verdict.what = std::string{inport ? "PlantInput inport:" : "PlantOutput outport:"} + name;
+      result_.report.push_back(verdict);
+      return;
+    }
+    // Inside a subsystem: the port's place in the subsystem's inputs or outputs, by its number.
+    TextPairs& ports = inport ? *subsystem_inputs : *subsystem_outputs;
+    const std::size_t index = static_cast<std::size_t>(std::max(1, std::atoi(port.c_str())));
+    if (ports.size() < index) ports.resize(index);
+    ports[index - 1].first = inport ? outputs[0] : inputs[0];
+    verdict.imported = true;
+    verdict.what = std::string{inport ? "input " : "output "} + port + " of its subsystem";
+    result_.report.push_back(verdict);
+  }
+
+  void subsystem(const Block& block, const std::string& block_path, const Workspace& outer,
+                 const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
+                 const std::vector<std::string>& enables, const std::vector<std::string>& triggers,
+                 std::vector<DuetBlock>& blocks, Names& names, Verdict& verdict) {
+    const std::string kind = block.parameters.count("SFBlockType") ? block.parameters.at("SFBlockType") : "NONE";
+    if (kind != "NONE") {
+      verdict.what = "a " + kind + " block: its code is MATLAB or Stateflow, which duet does not translate";
+      refuse(verdict);
+      return;
+    }
+    if (block.systems.empty()) {
+      verdict.what = "a subsystem without contents (a reference to another file?)";
+      refuse(verdict);
+      return;
+    }
+    // A masked subsystem's parameters, evaluated outside it, are variables inside it.
+    Workspace inner = outer;
+    for (const auto& [name, text] : block.mask_parameters) {
+      auto value = evaluate(text, outer);
+      if (!value) {
+        verdict.what = "mask parameter " + name + " '" + text + "': " + value.error();
+        refuse(verdict);
+        return;
+      }
+      inner.insert_or_assign(name, std::move(value).value());
+    }
+    DuetBlock made{.name = names.unique(identifier(block.name)), .type = "Subsystem"};
+    made.source = block_path + " (SubSystem)";
+    TextPairs inner_inputs;
+    TextPairs inner_outputs;
+    made.blocks = import_system(block.systems[0], block_path, inner, false, &inner_inputs, &inner_outputs);
+    for (std::size_t port = 0; port < inner_inputs.size(); ++port) {
+      if (port >= inputs.size() || inputs[port].empty()) {
+        verdict.what = "its input " + std::to_string(port + 1) + " is not connected";
+        refuse(verdict);
+        return;
+      }
+      if (!inner_inputs[port].first.empty()) made.inputs.emplace_back(inner_inputs[port].first, inputs[port]);
+    }
+    for (std::size_t port = 0; port < inner_outputs.size(); ++port) {
+      if (port < outputs.size() && !outputs[port].empty() && !inner_outputs[port].first.empty())
+        made.outputs.emplace_back(inner_outputs[port].first, outputs[port]);
+    }
+    if (!trigger_and_enable(block, block_path, enables, triggers, made, verdict)) return;
+    verdict.imported = true;
+    verdict.what = "Subsystem" + (made.trigger.empty() ? std::string{} : " triggered " + made.trigger) +
+                   (made.enable.empty() ? std::string{} : " enabled by " + made.enable);
+    result_.report.push_back(verdict);
+    blocks.push_back(std::move(made));
+  }
+
+  bool trigger_and_enable(const Block& block, const std::string& block_path, const std::vector<std::string>& enables,
+                          const std::vector<std::string>& triggers, DuetBlock& made, Verdict& verdict) {
+    for (const Block& inside : block.systems[0].blocks) {
+      const auto setting = [&](const char* name, const char* otherwise) {
+        const auto found = inside.parameters.find(name);
+        return found == inside.parameters.end() ? std::string{otherwise} : trimmed(found->second);
+      };
+      if (inside.type == "EnablePort") {
+        if (setting("StatesWhenEnabling", "held") != "held" || setting("ShowOutputPort", "off") != "off") {
+          verdict.what = "its enable port resets states or shows an output, which duet's enabled subsystems do not";
+          refuse(verdict);
+          return false;
+        }
+        if (enables.empty() || enables[0].empty()) {
+          verdict.what = "its enable port is not connected";
+          refuse(verdict);
+          return false;
+        }
+        made.enable = enables[0];
+      }
+      if (inside.type == "TriggerPort") {
+        const std::string type = setting("TriggerType", "rising");
+        if (type == "function-call") {
+          const auto mapped = options_.interrupts.find(block_path);
+          if (mapped == options_.interrupts.end()) {
+            verdict.what =
+                "a function-call subsystem: map it to an interrupt with --interrupt '" + block_path + "=IRQ:PRIORITY'";
+            refuse(verdict);
+            return false;
+          }
+          made.trigger = "{interrupt: " + mapped->second.interrupt +
+                         ", priority: " + std::to_string(mapped->second.priority) + "}";
+          continue;
+        }
+        if (setting("InitialTriggerSignalState", "compatibility (no trigger on first evaluation)") != "zero") {
+          verdict.what =
+              "its trigger's InitialTriggerSignalState is not 'zero': duet's edge detection starts from "
+              "zero (set it to zero in Simulink)";
+          refuse(verdict);
+          return false;
+        }
+        if (triggers.empty() || triggers[0].empty()) {
+          verdict.what = "its trigger port is not connected";
+          refuse(verdict);
+          return false;
+        }
+        made.trigger = "{edge: " + type + ", signal: " + triggers[0] + "}";
+      }
+    }
+    return true;
+  }
+
+  const SimulinkModel& model_;
+  const ImportOptions& options_;
+  ImportResult result_;
+  DuetModel duet_;
+  long long base_period_us_ = 0;
+  std::set<std::string> parameter_names_;
+};
+
+}  // namespace
+
+ImportResult import_simulink(const SimulinkModel& model, const ImportOptions& options) {
+  return Importer{model, options}.run();
+}
+
+}  // namespace duet::simulink_import
