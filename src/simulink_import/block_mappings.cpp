@@ -1,6 +1,8 @@
 // One mapping per Simulink block type the importer brings over (docs/IMPORT.md, "Blocks"): each checks that every
 // option the block has is one whose semantics duet's block has exactly, and refuses otherwise, naming the option.
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <string_view>
 
@@ -314,6 +316,187 @@ void pid(ImportContext& context) {
                "DiscretePid (" + *controller + ")");
 }
 
+void data_type_conversion(ImportContext& context) {
+  const auto type = context.raw("OutDataTypeStr");
+  if (!type) return;
+  static const std::map<std::string, std::string, std::less<>> types{
+      {"double", "double"}, {"single", "single"}, {"int8", "int8"},     {"int16", "int16"},     {"int32", "int32"},
+      {"uint8", "uint8"},   {"uint16", "uint16"}, {"uint32", "uint32"}, {"boolean", "boolean"},
+  };
+  const auto found = types.find(*type);
+  if (found == types.end()) {
+    context.refuse("OutDataTypeStr '" + *type +
+                   "': duet's Convert needs the output type written out (double, "
+                   "single, int8 ... uint32, boolean)");
+    return;
+  }
+  if (!context.require("ConvertRealWorld", "Real World Value (RWV)", "duet converts values, not stored integers"))
+    return;
+  const bool to_integer = found->second != "double" && found->second != "single" && found->second != "boolean";
+  if (to_integer && (!context.require("RndMeth", "Zero", "duet's Convert rounds toward zero") ||
+                     !context.require("SaturateOnIntegerOverflow", "on", "duet's Convert saturates")))
+    return;
+  unary(context, "Convert", {{"type", found->second}}, false, "Convert to " + found->second);
+}
+
+void mux(ImportContext& context) {
+  const auto count = context.scalar("Inputs");
+  if (!count) return;
+  const auto inputs = numbered_inputs(context, static_cast<std::size_t>(*count));
+  if (!inputs) return;
+  context.emit({.type = "Mux", .inputs = *inputs, .outputs = {{"y", context.output(1)}}}, "Mux");
+}
+
+void demux(ImportContext& context) {
+  const auto count = context.scalar("Outputs");
+  const auto u = context.input(1);
+  if (!count || !u) return;
+  if (*count < 1 || *count > 8) {
+    context.refuse("Outputs " + std::to_string(static_cast<long long>(*count)) +
+                   ": duet's Demux has one to eight outputs, one element each");
+    return;
+  }
+  TextPairs outputs;
+  for (std::size_t port = 1; port <= static_cast<std::size_t>(*count); ++port)
+    outputs.emplace_back("y" + std::to_string(port), context.output(port));
+  context.emit({.type = "Demux", .inputs = {{"u", *u}}, .outputs = outputs}, "Demux, an element per output");
+}
+
+// Simulink's single-tasking mode passes a rate transition's value on at once; duet's executive hands a slow value to
+// a fast task a slow period late, as Simulink's multitasking mode does.
+bool multitasking(ImportContext& context) {
+  const auto& solver = context.model().source().solver.parameters;
+  const auto setting = [&solver](const char* name) {
+    const auto found = solver.find(name);
+    return found == solver.end() ? std::string{} : found->second;
+  };
+  if (setting("EnableMultiTasking") == "off" || setting("SolverMode") == "SingleTasking") {
+    context.refuse(
+        "the model runs single-tasking, where a rate transition passes its value on at once; duet's rate "
+        "transitions are those of multitasking (set the solver's tasking mode to multitasking)");
+    return false;
+  }
+  return true;
+}
+
+void rate_transition(ImportContext& context) {
+  if (!multitasking(context) ||
+      !context.require("Integrity", "on", "duet's rate transitions always keep the data whole") ||
+      !context.require("Deterministic", "on", "duet hands values over deterministically between periodic rates"))
+    return;
+  const auto option = context.raw("OutPortSampleTimeOpt");
+  if (!option) return;
+  std::optional<std::string> period = std::string{};
+  if (*option == "Specify") {
+    period = context.period("OutPortSampleTime");
+  } else if (*option != "Inherit") {
+    context.refuse("OutPortSampleTimeOpt '" + *option + "': give the output's period (Specify) or inherit it");
+    return;
+  }
+  const auto initial = context.parameter("InitialCondition");
+  const auto u = context.input(1);
+  if (!period || !initial || !u) return;
+  context.emit({.type = "RateTransition",
+                .parameters = {{"initial", *initial}},
+                .inputs = {{"u", *u}},
+                .outputs = {{"y", context.output(1)}},
+                .period = *period},
+               "RateTransition");
+}
+
+void zero_order_hold(ImportContext& context) {
+  if (!multitasking(context)) return;
+  unary(context, "RateTransition", {}, true, "RateTransition (a zero-order hold samples at its period)");
+}
+
+void transfer_function(ImportContext& context) {
+  for (const char* source : {"NumeratorSource", "DenominatorSource"}) {
+    if (!context.require(source, "Dialog", "coefficients from ports are not duet's TransferFunction's")) return;
+  }
+  if (!context.require("ExternalReset", "None", "duet's TransferFunction has no external reset")) return;
+  const auto numerator = context.value("Numerator");
+  const auto denominator = context.value("Denominator");
+  const auto initial = context.scalar("InitialStates");
+  const auto a0_is_one = context.raw("a0EqualsOne");
+  if (!numerator || !denominator || !initial || !a0_is_one) return;
+  if (*initial != 0) {
+    context.refuse("InitialStates " + std::to_string(*initial) + ": duet's TransferFunction starts at rest");
+    return;
+  }
+  if (numerator->rows != 1 || denominator->rows != 1 || numerator->count() > denominator->count()) {
+    context.refuse(
+        "the numerator and denominator must be row vectors, the numerator no longer (a proper transfer "
+        "function)");
+    return;
+  }
+  if (*a0_is_one == "on" && denominator->elements.front() != 1) {
+    context.refuse("a0EqualsOne on with a0 = " + std::to_string(denominator->elements.front()) +
+                   ": Simulink then ignores a0, duet divides by it");
+    return;
+  }
+  // Both in descending powers of z, as long as the denominator: the numerator padded with leading zeros.
+  Value padded = *denominator;
+  std::fill(padded.elements.begin(), padded.elements.end(), 0.0);
+  std::copy(numerator->elements.begin(), numerator->elements.end(),
+            padded.elements.end() - static_cast<std::ptrdiff_t>(numerator->count()));
+  const auto as_text = [](const Value& value) {
+    std::string text = "[";
+    for (std::size_t k = 0; k < value.count(); ++k) text += (k == 0 ? "" : ", ") + yaml_number(value.elements[k]);
+    return text + "]";
+  };
+  unary(context, "TransferFunction", {{"numerator", as_text(padded)}, {"denominator", as_text(*denominator)}}, true,
+        "TransferFunction " + as_text(padded) + " / " + as_text(*denominator));
+}
+
+void state_space(ImportContext& context) {
+  TextPairs parameters;
+  for (const auto& [simulink, duet] : {std::pair{"A", "a"}, std::pair{"B", "b"}, std::pair{"C", "c"},
+                                       std::pair{"D", "d"}, std::pair{"InitialCondition", "initial"}}) {
+    const auto text = context.parameter(simulink);
+    if (!text) return;
+    parameters.emplace_back(duet, *text);
+  }
+  unary(context, "StateSpace", parameters, true, "StateSpace");
+}
+
+// A delay of N steps as N UnitDelays in a row, each from the initial condition.
+void delay(ImportContext& context) {
+  if (!context.require("DelayLengthSource", "Dialog", "a delay length from a port is not imported") ||
+      !context.require("InitialConditionSource", "Dialog", "an initial condition from a port is not imported") ||
+      !context.require("ExternalReset", "None", "a delay with an external reset is not imported") ||
+      !context.require("ShowEnablePort", "off", "a delay with an enable port is not imported"))
+    return;
+  const auto length = context.scalar("DelayLength");
+  const auto initial = context.parameter("InitialCondition");
+  const auto initial_value = context.value("InitialCondition");
+  const auto u = context.input(1);
+  const auto period = context.period();
+  if (!length || !initial || !initial_value || !u || !period) return;
+  if (*length < 1 || *length > 64 || *length != std::floor(*length)) {
+    context.refuse("DelayLength " + yaml_number(*length) + ": duet imports delays of 1 to 64 steps");
+    return;
+  }
+  if (!initial_value->is_scalar()) {
+    context.refuse("InitialCondition is " + initial_value->size_text() + ": one value for every step is imported");
+    return;
+  }
+  const auto steps = static_cast<std::size_t>(*length);
+  std::string signal = *u;
+  for (std::size_t step = 1; step <= steps; ++step) {
+    const std::string next =
+        step == steps ? context.output(1) : context.new_signal_name(context.block_name + "_" + std::to_string(step));
+    context.emit({.name = step == 1 ? context.block_name
+                                    : context.new_block_name(context.block_name + "_" + std::to_string(step)),
+                  .type = "UnitDelay",
+                  .parameters = {{"initial", *initial}},
+                  .inputs = {{"u", signal}},
+                  .outputs = {{"y", next}},
+                  .period = *period},
+                 step == 1 ? std::to_string(steps) + " UnitDelays in a row" : "");
+    signal = next;
+  }
+}
+
 }  // namespace
 
 BlockMapping mapping_for(const std::string& type) {
@@ -334,6 +517,14 @@ BlockMapping mapping_for(const std::string& type) {
       {"MinMax", min_max},
       {"Compare To Constant", compare_to_constant},
       {"PID 1dof", pid},
+      {"DataTypeConversion", data_type_conversion},
+      {"Mux", mux},
+      {"Demux", demux},
+      {"RateTransition", rate_transition},
+      {"ZeroOrderHold", zero_order_hold},
+      {"DiscreteTransferFcn", transfer_function},
+      {"DiscreteStateSpace", state_space},
+      {"Delay", delay},
   };
   const auto found = mappings.find(type);
   return found == mappings.end() ? nullptr : found->second;

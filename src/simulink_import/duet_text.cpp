@@ -1,6 +1,9 @@
 #include "duet_text.hpp"
 
 #include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
 
 namespace duet::simulink_import {
 namespace {
@@ -35,6 +38,28 @@ void write_block(const DuetBlock& block, const std::string& indent, std::string&
 }
 
 }  // namespace
+
+std::string yaml_number(double value) {
+  if (std::isinf(value)) return value > 0 ? ".inf" : "-.inf";
+  if (std::isnan(value)) return ".nan";
+  std::array<char, 32> text{};
+  char* const end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
+  return std::string(text.data(), end);
+}
+
+std::string yaml_value(const Value& value) {
+  const auto row = [&value](std::size_t r) {
+    std::string text = "[";
+    for (std::size_t c = 0; c < value.columns; ++c) text += (c == 0 ? "" : ", ") + yaml_number(value.at(r, c));
+    return text + "]";
+  };
+  if (value.is_scalar()) return yaml_number(value.elements.front());
+  if (value.rows == 1) return row(0);
+  std::string text = "[";
+  for (std::size_t r = 0; r < value.rows; ++r)
+    text += (r == 0 ? "" : ", ") + (value.columns == 1 ? yaml_number(value.at(r, 0)) : row(r));
+  return text + "]";
+}
 
 std::string yaml_string(const std::string& text) {
   const bool plain = !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {

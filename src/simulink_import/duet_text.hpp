@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "duet/simulink_import/matlab_value.hpp"
+
 namespace duet::simulink_import {
 
 using TextPairs = std::vector<std::pair<std::string, std::string>>;  // name -> YAML value text, in order
@@ -41,6 +43,11 @@ struct DuetModel {
 
 // The model file's text.
 [[nodiscard]] std::string duet_model_text(const DuetModel& model);
+
+// A number as YAML: the shortest text that reads back as the same double; .inf, -.inf, .nan.
+[[nodiscard]] std::string yaml_number(double value);
+// A value as YAML: a number, a list for a vector, a list of rows for a matrix.
+[[nodiscard]] std::string yaml_value(const Value& value);
 
 // A YAML scalar that reads back as `text`, quoted where YAML would read it otherwise.
 [[nodiscard]] std::string yaml_string(const std::string& text);

@@ -1,8 +1,6 @@
 #include "duet/simulink_import/import.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <functional>
 #include <set>
@@ -41,33 +39,6 @@ class Names {
  private:
   std::set<std::string> used_;
 };
-
-std::string number_text(double value) {
-  if (std::isinf(value)) return value > 0 ? ".inf" : "-.inf";
-  if (std::isnan(value)) return ".nan";
-  std::array<char, 32> text{};
-  char* const end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
-  return std::string(text.data(), end);
-}
-
-// A value as YAML: a number, a list for a vector, a list of rows for a matrix.
-std::string value_text(const Value& value) {
-  const auto row = [&value](std::size_t r) {
-    std::string text = "[";
-    for (std::size_t c = 0; c < value.columns; ++c) text += (c == 0 ? "" : ", ") + number_text(value.at(r, c));
-    return text + "]";
-  };
-  if (value.is_scalar()) return number_text(value.elements.front());
-  if (value.rows == 1) return row(0);
-  if (value.columns == 1) {
-    std::string text = "[";
-    for (std::size_t r = 0; r < value.rows; ++r) text += (r == 0 ? "" : ", ") + number_text(value.at(r, 0));
-    return text + "]";
-  }
-  std::string text = "[";
-  for (std::size_t r = 0; r < value.rows; ++r) text += (r == 0 ? "" : ", ") + row(r);
-  return text + "]";
-}
 
 bool is_variable_path(std::string_view text) {
   if (text.empty()) return false;
@@ -125,11 +96,11 @@ class Importer final : public ImportModel {
     const bool from_variables = is_variable_path(text) && variable != options_.variables.end() &&
                                 seen != context.workspace().end() && seen->second == variable->second &&
                                 evaluated.value().type == MatlabClass::double_class;
-    if (!from_variables) return value_text(evaluated.value());
+    if (!from_variables) return yaml_value(evaluated.value());
     std::string name = identifier(text);
     if (parameter_names_.insert(name).second) {
       duet_.parameters.push_back({.name = name,
-                                  .value = value_text(evaluated.value()),
+                                  .value = yaml_value(evaluated.value()),
                                   .type = {},
                                   .source = "the Simulink variable " + text + ", first used by " + context.path()});
     }

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include "duet/model/model_file.hpp"
 #include "duet/model/program.hpp"
@@ -30,11 +32,13 @@ class Ports : public plant::Plant {
   void advance(double, const plant::RaiseInterrupt&) override {}
   void write(std::string_view resource, std::span<const double> values) override {
     written[std::string{resource}] = values[0];
+    history[std::string{resource}].push_back(values[0]);
   }
   void read(std::string_view resource, std::span<double> values) override {
     values[0] = inports_.at(std::string{resource});
   }
-  std::map<std::string, double> written;
+  std::map<std::string, double> written;               // the last value each outport wrote
+  std::map<std::string, std::vector<double>> history;  // every value, a step after a step
 
  private:
   std::map<std::string, double> inports_;
@@ -75,6 +79,54 @@ TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   ASSERT_TRUE(simulated) << simulated.error();
   EXPECT_EQ(plant.written.at("outport:duty"), 10.0);
   EXPECT_EQ(plant.written.at("outport:previous"), 4.0);
+}
+
+// The imported model as duet checks it, or the test fails with the diagnostics and the text.
+std::optional<model::ProgramBuild> checked(const ImportResult& imported, std::unique_ptr<model::Model>& keep) {
+  EXPECT_TRUE(imported.problems.empty()) << ::testing::PrintToString(imported.problems);
+  auto parsed = model::parse_model(imported.model_text, "imported.yaml");
+  EXPECT_TRUE(parsed) << (parsed ? "" : parsed.error()) << "\n" << imported.model_text;
+  if (!parsed) return std::nullopt;
+  keep = std::make_unique<model::Model>(std::move(parsed).value());
+  model::ProgramBuild build = model::build_program(*keep);
+  for (const model::Diagnostic& diagnostic : build.diagnostics)
+    ADD_FAILURE() << model::format("imported.yaml", diagnostic) << "\n" << imported.model_text;
+  if (!build.program) return std::nullopt;
+  return build;
+}
+
+// Every block of the R2021a test model on a constant input u = 2, each value as Simulink's block computes it.
+TEST(Import, EachBlockComputesWhatItsSimulinkBlockDoes) {
+  const auto model = read_slx_model(parts_of(testing / "slx_r2021a"), "signal_chain.slx");
+  ASSERT_TRUE(model) << model.error();
+  const ImportResult imported = import_simulink(model.value(), {});
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  Ports plant{{{"inport:u", 2.0}}};
+  auto simulated = model::simulate(*build->program, plant, {.duration_s = 0.4, .record_plant = false});
+  ASSERT_TRUE(simulated) << simulated.error();
+  const auto steps = [&plant](const std::string& outport) { return plant.history.at("outport:y_" + outport); };
+  using Steps = std::vector<double>;
+  EXPECT_EQ(steps("product"), Steps(5, 6.0));                  // u * c
+  EXPECT_EQ(steps("difference"), Steps(5, 3.0));               // product - c
+  EXPECT_EQ(steps("magnitude"), Steps(5, 3.0));                // |c - product|
+  EXPECT_EQ(steps("direction"), Steps(5, -1.0));               // sign(c - product)
+  EXPECT_EQ(steps("limited"), Steps(5, 5.0));                  // 6 limited to [-5, 5]
+  EXPECT_EQ(steps("largest"), Steps(5, 3.0));                  // max(u, c)
+  EXPECT_EQ(steps("choice"), Steps(5, 6.0));                   // u2 = u = 2 > 1.5: the first input
+  EXPECT_EQ(steps("truncated"), Steps(5, 1.0));                // int16(1.5), toward zero
+  EXPECT_EQ(steps("late"), (Steps{7, 7, 7, 2, 2}));            // three steps late, from 7
+  EXPECT_EQ(steps("lag"), (Steps{0, 2, 3, 3.5, 3.75}));        // 1 / (z - 0.5): y(k) = 0.5 y(k-1) + u(k-1)
+  EXPECT_EQ(steps("state_lag"), (Steps{0, 2, 3, 3.5, 3.75}));  // the same as x(k+1) = 0.5 x + u, y = x
+  const Steps ramp = steps("ramp");                            // forward Euler: y(k) = y(k-1) + 1 * 0.1 * u(k-1)
+  ASSERT_EQ(ramp.size(), 5U);
+  for (std::size_t k = 0; k < ramp.size(); ++k) EXPECT_NEAR(ramp[k], 0.2 * static_cast<double>(k), 1e-12) << k;
+  EXPECT_EQ(steps("first"), Steps(5, 2.0));  // Mux then Demux
+  EXPECT_EQ(steps("second"), Steps(5, 3.0));
+  EXPECT_EQ(steps("tagged"), Steps(5, 3.0));  // through Goto and From
+  EXPECT_EQ(verdict(imported, "signal_chain/late").what, "3 UnitDelays in a row");
+  EXPECT_EQ(verdict(imported, "signal_chain/end").what, "nothing to bring over");
 }
 
 TEST(Import, RefusesWhatItCannotProveEqualAndSaysWhereAndWhy) {
