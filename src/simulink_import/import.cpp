@@ -245,9 +245,18 @@ class Importer final : public ImportModel {
       return outputs;
     };
 
+    const std::set<std::string> callers = function_call_sources(system, path, wiring);
     std::vector<DuetBlock> blocks;
     for (const Block& block : system.blocks) {
       const std::string block_path = path + "/" + block.name;
+      if (callers.count(block.name) != 0) {
+        result_.report.push_back({.path = block_path,
+                                  .type = block.type,
+                                  .imported = true,
+                                  .what = "raises function calls that --interrupt maps to interrupts: the interrupts "
+                                          "stand in for it"});
+        continue;
+      }
       const std::vector<std::string> inputs = input_signals(block, "in");
       const std::vector<std::string> outputs = output_signals(block);
       Verdict verdict{.path = block_path, .type = block.type, .imported = false, .what = {}};
@@ -281,7 +290,7 @@ class Importer final : public ImportModel {
       }
       if (block.type == "SubSystem") {
         subsystem(block, block_path, workspace, inputs, outputs, input_signals(block, "enable"),
-                  input_signals(block, "trigger"), blocks, names, verdict);
+                  input_signals(block, "trigger"), blocks, names, signals, verdict);
         continue;
       }
       const std::string type = block.type == "Reference" && block.parameters.count("SourceType") != 0
@@ -312,8 +321,45 @@ class Importer final : public ImportModel {
     return blocks;
   }
 
+  // Whether `block` is a function-call subsystem that --interrupt maps to an interrupt.
+  bool mapped_function_call(const Block& block, const std::string& block_path) const {
+    if (block.type != "SubSystem" || block.systems.empty() || options_.interrupts.count(block_path) == 0) return false;
+    return std::any_of(block.systems[0].blocks.begin(), block.systems[0].blocks.end(), [](const Block& inside) {
+      const auto type = inside.parameters.find("TriggerType");
+      return inside.type == "TriggerPort" && type != inside.parameters.end() && type->second == "function-call";
+    });
+  }
+
+  // The blocks whose every output goes to the trigger of a function-call subsystem --interrupt maps, or to such
+  // blocks (an interrupt block, and a Demux of its calls): in duet the interrupts raise those subsystems instead.
+  std::set<std::string> function_call_sources(const System& system, const std::string& path, const Wiring& wiring) {
+    std::set<std::string> callers;
+    std::set<std::string> mapped;
+    for (const Block& block : system.blocks)
+      if (mapped_function_call(block, path + "/" + block.name)) mapped.insert(block.name);
+    if (mapped.empty()) return callers;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (const Block& block : system.blocks) {
+        if (callers.count(block.name) != 0 || mapped.count(block.name) != 0) continue;
+        bool drives = false;
+        bool only_calls = true;
+        for (const auto& [destination, source] : wiring.fed) {
+          if (source.first != block.name) continue;
+          drives = true;
+          const auto& [name, kind, port] = destination;
+          only_calls = only_calls && ((kind == "trigger" && mapped.count(name) != 0) || callers.count(name) != 0);
+        }
+        if (drives && only_calls) grew = callers.insert(block.name).second;
+      }
+    }
+    return callers;
+  }
+
   void refuse(Verdict verdict) {
-    problem(verdict.path + " (" + verdict.type + "): " + verdict.what);
+    std::string path = verdict.path;
+    std::replace(path.begin(), path.end(), '\n', ' ');  // a message is one line
+    problem(path + " (" + verdict.type + "): " + verdict.what);
     result_.report.push_back(std::move(verdict));
   }
 
@@ -388,7 +434,7 @@ class Importer final : public ImportModel {
   void subsystem(const Block& block, const std::string& block_path, const Workspace& outer,
                  const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
                  const std::vector<std::string>& enables, const std::vector<std::string>& triggers,
-                 std::vector<DuetBlock>& blocks, Names& names, Verdict& verdict) {
+                 std::vector<DuetBlock>& blocks, Names& names, Names& signals, Verdict& verdict) {
     const std::string kind = block.parameters.count("SFBlockType") ? block.parameters.at("SFBlockType") : "NONE";
     if (kind != "NONE") {
       verdict.what = "a " + kind + " block: its code is MATLAB or Stateflow, which duet does not translate";
@@ -429,6 +475,17 @@ class Importer final : public ImportModel {
         made.outputs.emplace_back(inner_outputs[port].first, outputs[port]);
     }
     if (!trigger_and_enable(block, block_path, enables, triggers, made, verdict)) return;
+    if (!made.enable.empty()) {
+      // Simulink enables a subsystem while its enable signal is positive; duet's enable is one boolean.
+      const std::string enabled = signals.unique(made.name + "_enabled");
+      blocks.push_back({.name = names.unique(made.name + "_enabled"),
+                        .type = "Compare",
+                        .parameters = {{"operator", "\">\""}, {"value", "0"}},
+                        .inputs = {{"u", made.enable}},
+                        .outputs = {{"y", enabled}},
+                        .source = block_path + " (SubSystem): enabled while its enable signal is positive"});
+      made.enable = enabled;
+    }
     verdict.imported = true;
     verdict.what = "Subsystem" + (made.trigger.empty() ? std::string{} : " triggered " + made.trigger) +
                    (made.enable.empty() ? std::string{} : " enabled by " + made.enable);

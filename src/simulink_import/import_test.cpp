@@ -5,9 +5,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "duet/model/model_file.hpp"
 #include "duet/model/program.hpp"
@@ -25,23 +28,35 @@ using ::testing::HasSubstr;
 
 const std::filesystem::path testing = DUET_SIMULINK_TESTING_DIR;
 
-// A plant that answers the imported model's root inports with fixed values and keeps what its outports write.
+// A plant that answers the imported model's root inports (fixed values, or by the step) and keeps what its outports
+// write; it may raise an interrupt in chosen steps.
 class Ports : public plant::Plant {
  public:
-  explicit Ports(std::map<std::string, double> inports) : inports_(std::move(inports)) {}
-  void advance(double, const plant::RaiseInterrupt&) override {}
+  using Inport = std::function<double(std::size_t step)>;
+  explicit Ports(const std::map<std::string, double>& inports) {
+    for (const auto& [name, value] : inports) inports_[name] = [value](std::size_t) { return value; };
+  }
+  explicit Ports(std::map<std::string, Inport> inports) : inports_(std::move(inports)) {}
+  void advance(double time_s, const plant::RaiseInterrupt& raise) override {
+    step_ = static_cast<std::size_t>(std::llround(time_s / period_s));
+    if (interrupt_steps.count(step_) != 0) raise(interrupt);
+  }
   void write(std::string_view resource, std::span<const double> values) override {
     written[std::string{resource}] = values[0];
     history[std::string{resource}].push_back(values[0]);
   }
   void read(std::string_view resource, std::span<double> values) override {
-    values[0] = inports_.at(std::string{resource});
+    values[0] = inports_.at(std::string{resource})(step_);
   }
   std::map<std::string, double> written;               // the last value each outport wrote
   std::map<std::string, std::vector<double>> history;  // every value, a step after a step
+  double period_s = 0.01;
+  std::string interrupt;
+  std::set<std::size_t> interrupt_steps;
 
  private:
-  std::map<std::string, double> inports_;
+  std::map<std::string, Inport> inports_;
+  std::size_t step_ = 0;
 };
 
 const Verdict& verdict(const ImportResult& result, const std::string& path) {
@@ -127,6 +142,40 @@ TEST(Import, EachBlockComputesWhatItsSimulinkBlockDoes) {
   EXPECT_EQ(steps("tagged"), Steps(5, 3.0));  // through Goto and From
   EXPECT_EQ(verdict(imported, "signal_chain/late").what, "3 UnitDelays in a row");
   EXPECT_EQ(verdict(imported, "signal_chain/end").what, "nothing to bring over");
+}
+
+// Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
+// triggered on the clock's rising edges (its count advancing only then), and a function-call subsystem that
+// --interrupt makes an interrupt task, fed and read through rate transitions; the interrupt block that called it in
+// Simulink is not needed.
+TEST(Import, EnabledTriggeredAndFunctionCallSubsystems) {
+  auto model = read_simulink_file(testing / "subsystems.mdl");
+  ASSERT_TRUE(model) << model.error();
+  ImportOptions options;
+  options.interrupts["subsystems/ISR"] = {.interrupt = "TIM2", .priority = 3};
+  const ImportResult imported = import_simulink(model.value(), options);
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  EXPECT_EQ(verdict(imported, "subsystems/Timer interrupt").what,
+            "raises function calls that --interrupt maps to interrupts: the interrupts stand in for it");
+  const std::vector<double> gate{0, 1, 1, 0, 1, 0, 0, 0};
+  Ports plant{std::map<std::string, Ports::Inport>{
+      {"inport:u", [](std::size_t step) { return 3.0 + static_cast<double>(step); }},
+      {"inport:gate", [&gate](std::size_t step) { return gate[step]; }},
+      {"inport:clock", [](std::size_t step) { return static_cast<double>(step % 2); }}}};
+  plant.interrupt = "TIM2";
+  plant.interrupt_steps = {2, 5};
+  auto simulated = model::simulate(*build->program, plant, {.duration_s = 0.07, .record_plant = false});
+  ASSERT_TRUE(simulated) << simulated.error();
+  using Steps = std::vector<double>;
+  // 2 u while the gate is open, held while it is shut (0 before it first opens).
+  EXPECT_EQ(plant.history.at("outport:gated"), (Steps{0, 8, 10, 10, 14, 14, 14, 14}));
+  // The clock rises at steps 1, 3, 5 and 7.
+  EXPECT_EQ(plant.history.at("outport:counted"), (Steps{0, 1, 1, 2, 2, 3, 3, 4}));
+  // The interrupt comes before its step's base tick: the one at step 2 halves the newest u, step 1's 4; the one at
+  // step 5 step 4's 7. The base rate reads the newest half.
+  EXPECT_EQ(plant.history.at("outport:halved"), (Steps{0, 0, 2, 2, 2, 3.5, 3.5, 3.5}));
 }
 
 TEST(Import, RefusesWhatItCannotProveEqualAndSaysWhereAndWhy) {
