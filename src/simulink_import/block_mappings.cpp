@@ -497,6 +497,67 @@ void delay(ImportContext& context) {
   }
 }
 
+void relational(ImportContext& context) {
+  const auto operation = context.raw("Operator");
+  if (!operation) return;
+  static const std::map<std::string, std::string, std::less<>> operators{{"==", "=="}, {"~=", "!="}, {"<", "<"},
+                                                                         {"<=", "<="}, {">", ">"},   {">=", ">="}};
+  const auto found = operators.find(*operation);
+  if (found == operators.end()) {
+    context.refuse("Operator " + *operation + ": duet's Relational compares two inputs (==, ~=, <, <=, >, >=)");
+    return;
+  }
+  const auto inputs = numbered_inputs(context, 2);
+  if (!inputs) return;
+  context.emit({.type = "Relational",
+                .parameters = {{"operator", quoted(found->second)}},
+                .inputs = *inputs,
+                .outputs = {{"y", context.output(1)}}},
+               "Relational " + found->second);
+}
+
+void dead_zone(ImportContext& context) {
+  const auto start = context.parameter("LowerValue");
+  const auto end = context.parameter("UpperValue");
+  if (!start || !end) return;
+  unary(context, "DeadZone", {{"start", *start}, {"end", *end}}, false, "DeadZone [" + *start + ", " + *end + "]");
+}
+
+// The n-D Lookup Table with one dimension and explicit breakpoints.
+void lookup(ImportContext& context) {
+  if (!context.require("NumberOfTableDimensions", "1", "duet's Interpolation has one dimension") ||
+      !context.require("BreakpointsSpecification", "Explicit values", "give the breakpoints explicitly") ||
+      !context.require("UseLastTableValue", "off", "duet's Interpolation does not use the last value that way"))
+    return;
+  static const std::map<std::string, std::string, std::less<>> methods{{"Linear point-slope", "linear"},
+                                                                       {"Linear", "linear"},
+                                                                       {"Nearest", "nearest"},
+                                                                       {"Flat", "flat"},
+                                                                       {"Above", "above"}};
+  const auto method_text = context.raw("InterpMethod");
+  const auto extrapolation_text = context.raw("ExtrapMethod");
+  if (!method_text || !extrapolation_text) return;
+  const auto method = methods.find(*method_text);
+  if (method == methods.end()) {
+    context.refuse("InterpMethod '" + *method_text + "': duet interpolates linearly, to the nearest, flat or above");
+    return;
+  }
+  if (*extrapolation_text != "Clip" && !(*extrapolation_text == "Linear" && method->second == "linear")) {
+    context.refuse("ExtrapMethod '" + *extrapolation_text +
+                   "': duet clips, or continues the end segments of a linear interpolation");
+    return;
+  }
+  const auto breakpoints = context.parameter("BreakpointsForDimension1");
+  const auto table = context.parameter("Table");
+  if (!breakpoints || !table) return;
+  unary(context, "Interpolation",
+        {{"breakpoints", *breakpoints},
+         {"table", *table},
+         {"method", method->second},
+         {"extrapolation", *extrapolation_text == "Clip" ? "clip" : "linear"}},
+        true, "Interpolation (" + method->second + ")");
+}
+
 }  // namespace
 
 BlockMapping mapping_for(const std::string& type) {
@@ -525,6 +586,9 @@ BlockMapping mapping_for(const std::string& type) {
       {"DiscreteTransferFcn", transfer_function},
       {"DiscreteStateSpace", state_space},
       {"Delay", delay},
+      {"RelationalOperator", relational},
+      {"DeadZone", dead_zone},
+      {"Lookup_n-D", lookup},
   };
   const auto found = mappings.find(type);
   return found == mappings.end() ? nullptr : found->second;
