@@ -125,5 +125,14 @@ TEST(BlocksCompare, WithNanOnlyNotEqualHolds) {
   }
 }
 
+// Relational compares two signals with these same operators: infinities are ordinary values.
+TEST(BlocksCompare, InfinitiesCompareAsValues) {
+  const float infinity = std::numeric_limits<float>::infinity();
+  EXPECT_TRUE(compare(CompareOperator::less, -infinity, std::numeric_limits<float>::lowest()));
+  EXPECT_TRUE(compare(CompareOperator::equal, infinity, infinity));
+  EXPECT_FALSE(compare(CompareOperator::greater, infinity, infinity));
+  EXPECT_TRUE(compare(CompareOperator::greater_equal, infinity, -infinity));
+}
+
 }  // namespace
 }  // namespace duet::blocks

@@ -15,6 +15,7 @@ static_assert(absolute(-0.0) == 0.0);
 static_assert(select(false, 1.0F, 2.0F) == 2.0F);
 static_assert(sign(-3.5) == -1.0 && sign<std::uint8_t>(7) == 1 && sign(0) == 0);
 static_assert(minimum(2, -3) == -3 && maximum(2.5F, -3.0F) == 2.5F);
+static_assert(dead_zone(2.0, -0.5, 0.5) == 1.5);
 
 TEST(BlocksSaturate, LimitsToTheBoundsAndPassesEverythingBetween) {
   EXPECT_EQ(saturate(11.0, -1.0, 10.0), 10.0);
@@ -36,6 +37,29 @@ TEST(BlocksSaturate, NanPassesThrough) {
 TEST(BlocksSaturate, WithCrossedLimitsUpperIsCheckedFirst) {
   EXPECT_EQ(saturate(5, 10, 0), 0);    // above upper
   EXPECT_EQ(saturate(-5, 10, 0), 10);  // not above upper, below lower
+}
+
+TEST(BlocksDeadZone, ZeroInsideShiftedOutside) {
+  EXPECT_EQ(dead_zone(0.2, -0.5, 1.0), 0.0);
+  EXPECT_EQ(dead_zone(-0.5, -0.5, 1.0), 0.0);  // both ends belong to the zone
+  EXPECT_EQ(dead_zone(1.0, -0.5, 1.0), 0.0);
+  EXPECT_EQ(dead_zone(1.25, -0.5, 1.0), 0.25);
+  EXPECT_EQ(dead_zone(-2.0, -0.5, 1.0), -1.5);
+  EXPECT_EQ(dead_zone(3.0F, 1.0F, 2.0F), 1.0F);
+  EXPECT_EQ(dead_zone(0.0F, 1.0F, 2.0F), -1.0F);           // a zone that does not hold 0 shifts 0 too
+  EXPECT_FALSE(std::signbit(dead_zone(-0.0, -1.0, 1.0)));  // the zone's zero is +0.0
+}
+
+TEST(BlocksDeadZone, InfinitiesNanAndAZoneOfOnePoint) {
+  const double infinity = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(dead_zone(infinity, -1.0, 1.0), infinity);
+  EXPECT_EQ(dead_zone(-infinity, -1.0, 1.0), -infinity);
+  EXPECT_TRUE(std::isnan(dead_zone(std::numeric_limits<double>::quiet_NaN(), -1.0, 1.0)));
+  EXPECT_EQ(dead_zone(2.0, 2.0, 2.0), 0.0);
+  EXPECT_EQ(dead_zone(2.5, 2.0, 2.0), 0.5);
+  EXPECT_EQ(dead_zone(1.5, 2.0, 2.0), -0.5);
+  EXPECT_EQ(dead_zone(5.0, 1.0, -1.0), 6.0);  // crossed: u > end is tested first
+  EXPECT_EQ(dead_zone(0.0, 1.0, -1.0), 1.0);  // then u >= start fails: u - start
 }
 
 TEST(BlocksAbsolute, IntegersAndTheMostNegativeValue) {

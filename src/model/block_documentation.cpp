@@ -17,6 +17,8 @@ constexpr std::string_view byte_orders[] = {"little", "big"};
 constexpr std::string_view edges[] = {"rising", "falling", "either"};
 constexpr std::string_view anti_windups[] = {"none", "clamping"};
 constexpr std::string_view transitions[] = {"deterministic", "latest"};
+constexpr std::string_view interpolations[] = {"linear", "nearest", "flat", "above"};
+constexpr std::string_view extrapolations[] = {"clip", "linear"};
 
 constexpr ParameterDocumentation number(std::string_view name, std::string_view description) {
   return {.name = name, .description = description};
@@ -44,6 +46,14 @@ constexpr ParameterDocumentation product[] = {word("signs", "one * or / per inpu
 constexpr ParameterDocumentation logic[] = {word("operator", "the operation on all inputs", logic_operators)};
 constexpr ParameterDocumentation compare[] = {word("operator", "the comparison u OPERATOR value", comparisons),
                                               number("value", "what u is compared with")};
+constexpr ParameterDocumentation relational[] = {word("operator", "the comparison u1 OPERATOR u2", comparisons)};
+constexpr ParameterDocumentation dead_zone[] = {number("start", "where the zone starts (u below: u - start)"),
+                                                number("end", "where it ends, start or above (u above: u - end)")};
+constexpr ParameterDocumentation interpolation[] = {
+    number("breakpoints", "the inputs of the table's values, strictly increasing, 2 or more"),
+    number("table", "one value per breakpoint"),
+    word("method", "linear (default), nearest, flat (the breakpoint at or below) or above", interpolations),
+    word("extrapolation", "beyond the breakpoints: clip (default) or linear (with method linear)", extrapolations)};
 constexpr ParameterDocumentation saturation[] = {number("lower", "the smallest output"),
                                                  number("upper", "the largest output")};
 constexpr ParameterDocumentation minmax[] = {word("function", "minimum or maximum, element-wise", extrema)};
@@ -130,8 +140,11 @@ constexpr BlockDocumentation table[] = {
     {"Not", "logic", "The boolean negation", {}},
     {"Logic", "logic", "AND, OR, XOR, NAND or NOR of the inputs (a number is true when not 0)", logic},
     {"Compare", "logic", "u compared with a value: a boolean", compare},
+    {"Relational", "logic", "u1 compared with u2, element by element (a scalar with each element): a boolean",
+     relational},
     {"Switch", "signals", "condition (not 0) ? on : off", {}},
     {"Saturation", "math", "u limited to lower..upper", saturation},
+    {"DeadZone", "math", "0 for start <= u <= end, else u - start or u - end", dead_zone},
     {"Abs", "math", "|u|", {}},
     {"Sign", "math", "-1, 0 or 1 (a NaN gives 0)", {}},
     {"MinMax", "math", "The element-wise minimum or maximum of the inputs; a NaN loses to a number", minmax},
@@ -143,6 +156,8 @@ constexpr BlockDocumentation table[] = {
     {"ByteUnpack", "signals", "Values of a type from bytes", byte_unpack},
     {"Selector", "signals", "The element of u at index (0-based, clamped)", {}},
     {"Lookup", "signals", "The table's element at index (0-based, clamped)", lookup},
+    {"Interpolation", "math", "The table at u, interpolated between breakpoints (Simulink's 1-D Lookup Table)",
+     interpolation},
     {"Counter", "sources", "0, 1, ..., limit, 0, ... one count per step", counter},
     {"Step", "sources", "initial, then from time_s on final", step},
     {"PulseGenerator", "sources", "amplitude for width_s of every period_s after delay_s, else 0", pulse},

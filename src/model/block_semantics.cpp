@@ -133,6 +133,21 @@ blocks::LogicOperator logic_operator(const ProgramBlock& block) {
   return parse_logic_operator(op == nullptr ? "" : op->text).value_or(blocks::LogicOperator::logical_and);
 }
 
+blocks::InterpolationMethod interpolation_method(const ProgramBlock& block) {
+  const Argument* method = block.argument("method");
+  const std::string text = method == nullptr ? std::string{} : method->text;
+  if (text == "nearest") return blocks::InterpolationMethod::nearest;
+  if (text == "flat") return blocks::InterpolationMethod::flat;
+  if (text == "above") return blocks::InterpolationMethod::above;
+  return blocks::InterpolationMethod::linear;
+}
+
+blocks::Extrapolation extrapolation_of(const ProgramBlock& block) {
+  const Argument* extrapolation = block.argument("extrapolation");
+  return extrapolation != nullptr && extrapolation->text == "linear" ? blocks::Extrapolation::linear
+                                                                     : blocks::Extrapolation::clip;
+}
+
 Transfer transfer_of(const Program& program, const ProgramBlock& block) {
   const std::size_t writer = block.update_task;
   const std::size_t reader = block.task;

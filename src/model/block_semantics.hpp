@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "duet/blocks/bytes.hpp"
+#include "duet/blocks/interpolation.hpp"
 #include "duet/blocks/logic.hpp"
 #include "duet/blocks/state.hpp"
 #include "duet/model/program.hpp"
@@ -64,6 +65,9 @@ struct MatrixSizes {
 // Of a validated block (check_types refuses unknown operators).
 [[nodiscard]] blocks::CompareOperator compare_operator(const ProgramBlock& block);
 [[nodiscard]] blocks::LogicOperator logic_operator(const ProgramBlock& block);
+// An Interpolation's method (linear unless given) and extrapolation (clip unless given).
+[[nodiscard]] blocks::InterpolationMethod interpolation_method(const ProgramBlock& block);
+[[nodiscard]] blocks::Extrapolation extrapolation_of(const ProgramBlock& block);
 
 // How a RateTransition hands its value from the writer's task to the reader's (duet/rt/rate_transition.hpp):
 // between periodic rates deterministically at the slower rate's releases, which come every `ratio` activations of

@@ -14,8 +14,10 @@ const std::vector<BlockType> table{
     {"Not", {"u"}, {"y"}, {}},
     {"Logic", {}, {"y"}, {{"operator"}}, true, true},
     {"Compare", {"u"}, {"y"}, {{"operator"}, {"value"}}},
+    {"Relational", {"u1", "u2"}, {"y"}, {{"operator"}}},
     {"Switch", {"on", "condition", "off"}, {"y"}, {}},
     {"Saturation", {"u"}, {"y"}, {{"lower"}, {"upper"}}},
+    {"DeadZone", {"u"}, {"y"}, {{"start"}, {"end"}}},
     {"Abs", {"u"}, {"y"}, {}},
     {"Sign", {"u"}, {"y"}, {}},
     {"MinMax", {}, {"y"}, {{"function"}}, true, true},
@@ -28,6 +30,7 @@ const std::vector<BlockType> table{
     {"ByteUnpack", {"u"}, {"y"}, {{"type"}, {"endian", false}, {"offset", false}, {"count", false}}},
     {"Selector", {"u", "index"}, {"y"}, {}},
     {"Lookup", {"index"}, {"y"}, {{"table"}}},
+    {"Interpolation", {"u"}, {"y"}, {{"breakpoints"}, {"table"}, {"method", false}, {"extrapolation", false}}},
     {"Counter", {}, {"y"}, {{"limit"}, {"initial", false}, {"type", false}}, false},
     // Sources counting their own steps (Simulink's sample-based Step and Pulse Generator).
     {"Step", {}, {"y"}, {{"time_s"}, {"initial", false}, {"final"}, {"type", false}}, false},
@@ -105,9 +108,9 @@ const std::vector<BlockType> table{
 std::span<const BlockType> block_types() { return table; }
 
 bool is_word_parameter(std::string_view parameter) {
-  constexpr std::string_view words[] = {"pin",     "timer",    "spi",      "adc",    "line",
-                                        "channel", "operator", "mode",     "type",   "signs",
-                                        "edge",    "resource", "function", "endian", "anti_windup"};
+  constexpr std::string_view words[] = {"pin",      "timer",  "spi",         "adc",    "line",         "channel",
+                                        "operator", "mode",   "type",        "signs",  "edge",         "resource",
+                                        "function", "endian", "anti_windup", "method", "extrapolation"};
   return std::find(std::begin(words), std::end(words), parameter) != std::end(words);
 }
 

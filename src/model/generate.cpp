@@ -262,8 +262,11 @@ class FileWriter {
     text += "#include \"duet/blocks/logic.hpp\"\n#include \"duet/blocks/matrix.hpp\"\n";
     text += "#include \"duet/blocks/nonlinear.hpp\"\n#include \"duet/blocks/table.hpp\"\n";
     text += "#include \"duet/blocks/trigonometry.hpp\"\n#include \"duet/hardware/hardware.hpp\"\n";
-    text += used_headers(
-        {{"BytePack", "bytes"}, {"ByteUnpack", "bytes"}, {"Mean", "average"}, {"StateFeedback", "state_space"}});
+    text += used_headers({{"BytePack", "bytes"},
+                          {"ByteUnpack", "bytes"},
+                          {"Mean", "average"},
+                          {"StateFeedback", "state_space"},
+                          {"Interpolation", "interpolation"}});
     std::set<std::string> headers;  // the Code blocks' functions, from the model's folder
     for (const ProgramBlock& block : program_.blocks) {
       if (block.block->code) headers.insert(block.block->code->file);

@@ -65,6 +65,16 @@ std::string compare_name(blocks::CompareOperator op) {
   return std::string{"duet::blocks::CompareOperator::"} + names[static_cast<int>(op)];
 }
 
+std::string interpolation_name(blocks::InterpolationMethod method) {
+  constexpr const char* names[] = {"linear", "nearest", "flat", "above"};
+  return std::string{"duet::blocks::InterpolationMethod::"} + names[static_cast<int>(method)];
+}
+
+std::string extrapolation_name(blocks::Extrapolation extrapolation) {
+  return extrapolation == blocks::Extrapolation::linear ? "duet::blocks::Extrapolation::linear"
+                                                        : "duet::blocks::Extrapolation::clip";
+}
+
 std::string logic_name(blocks::LogicOperator op) {
   constexpr const char* names[] = {"logical_and", "logical_or", "logical_xor", "logical_nand", "logical_nor"};
   return std::string{"duet::blocks::LogicOperator::"} + names[static_cast<int>(op)];
@@ -417,6 +427,22 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
     return assign("duet::blocks::saturate(" + in(0, "i") + ", " + argument(block, "lower", -infinity, t, "i") + ", " +
                   argument(block, "upper", infinity, t, "i") + ")");
   }
+  if (type == "DeadZone") {
+    return assign("duet::blocks::dead_zone(" + in(0, "i") + ", " + argument(block, "start", 0, t, "i") + ", " +
+                  argument(block, "end", 0, t, "i") + ")");
+  }
+  if (type == "Interpolation") {
+    // Both have two values or more: a tunable parameter's array, or the block's constant array.
+    const auto values = [&](const char* name) {
+      const Argument& given = *block.argument(name);
+      const std::string data = given.kind == Argument::Kind::parameter ? "p." + program_.parameter(given).name
+                                                                       : block.identifier + "_" + name;
+      return "std::span<const " + type_of(t) + ">{" + data + ", " + std::to_string(given.value.elements.size()) + "}";
+    };
+    return assign("duet::blocks::interpolate(" + interpolation_name(interpolation_method(block)) + ", " +
+                  extrapolation_name(extrapolation_of(block)) + ", " + values("breakpoints") + ", " + values("table") +
+                  ", " + in(0, "i") + ")");
+  }
   if (type == "Abs") return assign("duet::blocks::absolute(" + in(0, "i") + ")");
   if (type == "Sign") return assign("duet::blocks::sign(" + in(0, "i") + ")");
   if (type == "MinMax") {
@@ -448,6 +474,10 @@ std::string Generator::output_statements(const ProgramBlock& block) const {
     const DataType compared = program_.signals[block.inputs[0]].type.type;
     return assign("duet::blocks::compare(" + compare_name(compare_operator(block)) + ", " + in(0, "i") + ", " +
                   argument(block, "value", 0, compared, "i") + ")");
+  }
+  if (type == "Relational") {
+    return assign("duet::blocks::compare(" + compare_name(compare_operator(block)) + ", " + in(0, "i") + ", " +
+                  in(1, "i") + ")");
   }
   if (type == "Logic") {
     std::string inputs;

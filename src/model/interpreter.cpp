@@ -10,6 +10,7 @@
 #include "duet/blocks/average.hpp"
 #include "duet/blocks/bytes.hpp"
 #include "duet/blocks/convert.hpp"
+#include "duet/blocks/interpolation.hpp"
 #include "duet/blocks/kalman.hpp"
 #include "duet/blocks/logic.hpp"
 #include "duet/blocks/matrix.hpp"
@@ -353,6 +354,26 @@ Compiled floating(Compiler& c, const ProgramBlock& block) {
     const Operand<T> x = c.input<T>(block, 1);
     return {elementwise<T>(c, block, [u, x](std::size_t i) { return blocks::atan2(u[i], x[i]); }), {}};
   }
+  if (type == "DeadZone") {
+    const Operand<T> start = c.argument<T>(block, "start", 0);
+    const Operand<T> end = c.argument<T>(block, "end", 0);
+    return {
+        elementwise<T>(c, block, [u, start, end](std::size_t i) { return blocks::dead_zone(u[i], start[i], end[i]); }),
+        {}};
+  }
+  if (type == "Interpolation") {
+    const std::size_t count = block.argument("breakpoints")->value.elements.size();
+    const Operand<T> breakpoints = c.argument<T>(block, "breakpoints", 0);
+    const Operand<T> table = c.argument<T>(block, "table", 0);
+    const blocks::InterpolationMethod method = interpolation_method(block);
+    const blocks::Extrapolation extrapolation = extrapolation_of(block);
+    return {elementwise<T>(c, block,
+                           [u, breakpoints, table, count, method, extrapolation](std::size_t i) {
+                             return blocks::interpolate(method, extrapolation, breakpoints.all(count), table.all(count),
+                                                        u[i]);
+                           }),
+            {}};
+  }
   if (type == "DiscreteIntegrator") {
     auto states = std::make_shared<std::vector<blocks::DiscreteIntegrator<T>>>(n);
     const Operand<T> gain = c.argument<T>(block, "gain", 1);
@@ -624,6 +645,12 @@ Compiled by_input_type(Compiler& c, const ProgramBlock& block) {
     return {elementwise<bool>(c, block, [u, value, op](std::size_t i) { return blocks::compare(op, u[i], value[i]); }),
             {}};
   }
+  if (type == "Relational") {
+    const Operand<T> u1 = c.input<T>(block, 0);
+    const Operand<T> u2 = c.input<T>(block, 1);
+    const blocks::CompareOperator op = compare_operator(block);
+    return {elementwise<bool>(c, block, [u1, u2, op](std::size_t i) { return blocks::compare(op, u1[i], u2[i]); }), {}};
+  }
   if (type == "EdgeDetect") {
     auto detector = std::make_shared<blocks::EdgeDetector<T>>();
     const Operand<T> u = c.input<T>(block, 0);
@@ -860,7 +887,7 @@ Compiled compile(Compiler& c, const ProgramBlock& block, const UserCodeLibrary* 
   if (type == "Logic") return logic(c, block);
   if (type == "BytePack" || type == "ByteUnpack") return bytes(c, block);
   if (!hardware_resource(block).empty()) return hardware(c, block);
-  if (type == "Not" || type == "Compare" || type == "Convert" || type == "EdgeDetect") {
+  if (type == "Not" || type == "Compare" || type == "Relational" || type == "Convert" || type == "EdgeDetect") {
     return with_type(c.type_in(block), [&](auto tag) { return by_input_type<decltype(tag)>(c, block); });
   }
   return with_type(c.type_out(block), [&](auto tag) { return any_type<decltype(tag)>(c, block); });

@@ -371,6 +371,50 @@ TEST(SimulationBlocks, LookupInATunableTableClampsItsIndex) {
   EXPECT_EQ(columns.at("y"), (Column{5, 5, 5, 6, 7, -7, -7}));  // index -2, -1, 0, 1, 2, 3, 4; T[2] = -7 from tick 5
 }
 
+TEST(SimulationBlocks, RelationalComparesTwoSignalsAndExpandsAScalar) {
+  const Built built{std::string{ramp} +
+                    "  - {name: c, type: Constant, parameters: {value: [1, 3]}, outputs: {y: limits}}\n"
+                    "  - {name: ge, type: Relational, parameters: {operator: '>='}, inputs: {u1: x, u2: limits},"
+                    " outputs: {y: reached}}\n"
+                    "  - {name: ne, type: Relational, parameters: {operator: '!='}, inputs: {u1: limits, u2: x},"
+                    " outputs: {y: apart}}\n"};
+  const auto columns = run(built, {"reached", "apart"}, 5);  // x = 0..4 against 1 and 3
+  EXPECT_EQ(columns.at("reached[0]"), (Column{0, 1, 1, 1, 1}));
+  EXPECT_EQ(columns.at("reached[1]"), (Column{0, 0, 0, 1, 1}));
+  EXPECT_EQ(columns.at("apart[0]"), (Column{1, 0, 1, 1, 1}));
+  EXPECT_EQ(columns.at("apart[1]"), (Column{1, 1, 1, 0, 1}));
+}
+
+TEST(SimulationBlocks, DeadZone) {
+  const Built built{std::string{ramp} +
+                    "  - {name: d, type: DeadZone, parameters: {start: 1, end: 3}, inputs: {u: x}, outputs: {y: y}}\n"
+                    "  - {name: p, type: DeadZone, parameters: {start: 2, end: 2}, inputs: {u: x}, outputs: {y: z}}\n"};
+  const auto columns = run(built, {"y", "z"}, 6);
+  EXPECT_EQ(columns.at("y"), (Column{-1, 0, 0, 0, 1, 2}));
+  EXPECT_EQ(columns.at("z"), (Column{-2, -1, 0, 1, 2, 3}));
+}
+
+TEST(SimulationBlocks, InterpolationInATunableTable) {
+  const Built built{std::string{ramp} +
+                        "  - {name: clip, type: Interpolation, parameters: {breakpoints: [1, 2, 4], table: T},"
+                        " inputs: {u: x}, outputs: {y: clipped}}\n"
+                        "  - {name: line, type: Interpolation, parameters: {breakpoints: [1, 2, 4], table: T,"
+                        " extrapolation: linear}, inputs: {u: x}, outputs: {y: extended}}\n"
+                        "  - {name: near, type: Interpolation, parameters: {breakpoints: [1, 2, 4], table: T,"
+                        " method: nearest}, inputs: {u: x}, outputs: {y: nearest}}\n",
+                    "parameters:\n  T: [10, 20, 0]\n"};
+  const std::size_t table = built.parameter("T");
+  plant::Loopback plant;
+  const auto columns =
+      run(built, plant, {"clipped", "extended", "nearest"}, 6, [table](std::uint64_t tick, Interpreter& model) {
+        if (tick == 5) model.set_parameter(table, 2, 8);
+      });
+  // x = 0..5; from tick 5 the last value is 8: (8 - 20) * 1.5 + 20 = 2.
+  EXPECT_EQ(columns.at("clipped"), (Column{10, 10, 20, 10, 0, 8}));
+  EXPECT_EQ(columns.at("extended"), (Column{0, 10, 20, 10, 0, 2}));
+  EXPECT_EQ(columns.at("nearest"), (Column{10, 10, 20, 0, 0, 8}));  // 3 is midway between 2 and 4: the upper
+}
+
 TEST(SimulationBlocks, CounterWrapsAtItsLimit) {
   const Built built{
       "  - {name: a, type: Counter, parameters: {limit: 2}, outputs: {y: a}}\n"

@@ -101,6 +101,11 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
     y = boolean_like(first_known(inputs, {0}));
   } else if (type == "Logic") {
     y = boolean_like(first_known(inputs));
+  } else if (type == "Relational") {
+    // One input may be a scalar that the other's elements are each compared with.
+    const auto u1 = shape_of(inputs[0]);
+    const auto u2 = shape_of(inputs[1]);
+    if (u1 && u2) y = SignalType{DataType::boolean, u1->empty() ? *u2 : *u1};
   } else if (type == "Switch") {
     y = first_known(inputs, {0, 2});
   } else if (type == "Convert") {
@@ -225,7 +230,7 @@ class BlockCheck {
                     : "double, single, int8, int16, int32, uint8, uint16, uint32 or boolean");
     }
     const Argument* op = block_.argument("operator");
-    if (op != nullptr && block_.type() == "Compare" && !parse_compare_operator(op->text)) {
+    if (op != nullptr && is({"Compare", "Relational"}) && !parse_compare_operator(op->text)) {
       error(op->location, name_ + " has no operator '" + op->text + "'", "its operators: <, <=, ==, !=, >= and >");
     }
     if (op != nullptr && block_.type() == "Logic" && !parse_logic_operator(op->text)) {
@@ -244,6 +249,8 @@ class BlockCheck {
     choice("function", {"min", "max"});
     choice("endian", {"little", "big"});
     choice("anti_windup", {"none", "clamping"});
+    choice("method", {"linear", "nearest", "flat", "above"});
+    choice("extrapolation", {"clip", "linear"});
     const Argument* signs = block_.argument("signs");
     if (signs != nullptr && block_.type() == "Product") {
       if (signs->text.find_first_not_of("*/") != std::string::npos || signs->text.size() != block_.inputs.size()) {
@@ -328,7 +335,8 @@ class BlockCheck {
       return;
     }
     if (is({"DiscreteIntegrator", "DiscreteDerivative", "DiscretePid", "Atan2", "PwmOut", "FilteredDerivative",
-            "TransferFunction", "StateSpace", "Mean", "MovingAverage", "KalmanFilter", "StateFeedback"}) &&
+            "TransferFunction", "StateSpace", "Mean", "MovingAverage", "KalmanFilter", "StateFeedback", "DeadZone",
+            "Interpolation"}) &&
         !is_floating(input_type(0).type)) {
       error(
           input_location(0),
@@ -353,6 +361,17 @@ class BlockCheck {
     if (is({"StateSpace", "KalmanFilter", "StateFeedback", "TransferFunction"})) matrices();
     if (is({"Mux", "MatrixMultiply"})) same(all, true, false);
     if (block_.type() == "Logic") same(all, false, true);
+    if (block_.type() == "Relational") {
+      same(all, true, false);
+      const SignalType& u1 = input_type(0);
+      const SignalType& u2 = input_type(1);
+      if (!u1.shape.empty() && !u2.shape.empty() && u1.shape != u2.shape) {
+        error(input_location(1),
+              "size mismatch: " + input(1) + " of " + name_ + " is " + describe(u2) + ", but " + input(0) + " is " +
+                  describe(u1),
+              "compare inputs of one size, or one of them with a scalar");
+      }
+    }
     if (block_.type() == "Switch") {
       same({0, 2}, true, true);
       const SignalType& condition = input_type(1);
@@ -562,6 +581,62 @@ class BlockCheck {
     }
   }
 
+  // A DeadZone's start is not above its end, element by element (a scalar applies to every element); a tunable
+  // parameter's initial values are checked.
+  void zone_limits() {
+    const Argument* start = block_.argument("start");
+    const Argument* end = block_.argument("end");
+    if (start == nullptr || end == nullptr) return;
+    const std::vector<double>& starts = start->value.elements;
+    const std::vector<double>& ends = end->value.elements;
+    if (starts.empty() || ends.empty()) return;
+    for (std::size_t k = 0; k < std::max(starts.size(), ends.size()); ++k) {
+      const double first = starts[std::min(k, starts.size() - 1)];
+      const double last = ends[std::min(k, ends.size() - 1)];
+      if (first <= last) continue;
+      error(start->location,
+            "parameter 'start' of " + name_ + " is " + format_number(first) + ", above its end, " + format_number(last),
+            "the dead zone is start..end: give start <= end");
+      return;
+    }
+  }
+
+  // An Interpolation's breakpoints increase strictly, one table value each, and only linear interpolation
+  // extrapolates.
+  void interpolation_table() {
+    const Argument* breakpoints = block_.argument("breakpoints");
+    const Argument* table = block_.argument("table");
+    const std::vector<double>& at = breakpoints->value.elements;
+    if (at.size() < 2) {
+      error(breakpoints->location,
+            "parameter 'breakpoints' of " + name_ + " has " + std::to_string(at.size()) +
+                (at.size() == 1 ? " value" : " values") + ", but it needs at least 2",
+            "give two or more breakpoints in increasing order");
+      return;
+    }
+    for (std::size_t k = 1; k < at.size(); ++k) {
+      if (at[k] > at[k - 1]) continue;
+      error(breakpoints->location,
+            "parameter 'breakpoints' of " + name_ + " does not increase strictly: " + format_number(at[k]) +
+                " follows " + format_number(at[k - 1]),
+            "each breakpoint must be above the one before");
+      return;
+    }
+    if (table->value.elements.size() != at.size()) {
+      error(table->location,
+            "size mismatch: parameter 'table' of " + name_ + " has " + std::to_string(table->value.elements.size()) +
+                " values for " + std::to_string(at.size()) + " breakpoints",
+            "give one table value per breakpoint");
+    }
+    const Argument* extrapolation = block_.argument("extrapolation");
+    const Argument* method = block_.argument("method");
+    if (extrapolation != nullptr && extrapolation->text == "linear" && method != nullptr && method->text != "linear") {
+      error(extrapolation->location,
+            name_ + " extrapolates linearly, but its method is '" + method->text + "', which does not interpolate",
+            "give method: linear, or leave out extrapolation (clip)");
+    }
+  }
+
   // Why the block's parameters take the type they must: for the hint of a value that does not fit.
   [[nodiscard]] std::string computes_in(DataType expected) const {
     const std::string type{type_name(expected)};
@@ -575,10 +650,13 @@ class BlockCheck {
   // a value of the block's type.
   void parameters() {
     static const std::set<std::string> numeric{
-        "k",     "lower",     "upper",     "gain",        "initial", "p", "i", "d", "n", "value", "limit",     "table",
-        "final", "amplitude", "numerator", "denominator", "a",       "b", "c", "g", "q", "r",     "covariance"};
-    // Blocks whose parameters are matrices, checked by matrices(), not element by element.
-    const bool elementwise = !is({"StateSpace", "KalmanFilter", "StateFeedback", "TransferFunction"});
+        "k",     "lower", "upper", "gain",  "initial",    "p",         "i",           "d",          "n",
+        "value", "limit", "table", "final", "amplitude",  "numerator", "denominator", "a",          "b",
+        "c",     "g",     "q",     "r",     "covariance", "start",     "end",         "breakpoints"};
+    if (block_.type() == "DeadZone") zone_limits();
+    if (block_.type() == "Interpolation") interpolation_table();
+    // Blocks whose parameters are matrices (checked by matrices()) or tables, not one value per element.
+    const bool elementwise = !is({"StateSpace", "KalmanFilter", "StateFeedback", "TransferFunction", "Interpolation"});
     if (block_.outputs.empty() || block_.type() == "Lookup") return;  // a Lookup's table gives it its type
     const SignalType& working = program_.signals[block_.outputs[0]].type;
     for (const auto& [parameter_name, argument] : block_.arguments) {

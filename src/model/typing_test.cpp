@@ -320,6 +320,69 @@ const Case cases[] = {
      "  - {name: a, type: DiscretePid, parameters: {p: 2}, inputs: {error: x, reset: x}, outputs: {y: y}}\n",
      "m.yaml:6:73: error: type mismatch: input 'reset' (signal 'x') of block 'a' (DiscretePid) is double, but a reset "
      "is boolean (give one boolean, or one per element of the error (Compare gives a boolean))\n"},
+    {"relational_unknown_operator", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: r, type: Relational, parameters: {operator: '=>'}, inputs: {u1: x, u2: x}, outputs: {y: y}}\n",
+     "m.yaml:6:56: error: block 'r' (Relational) has no operator '=>' (its operators: <, <=, ==, !=, >= and "
+     ">)\n"},
+    {"relational_of_two_types", "",
+     "  - {name: a, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: b, type: Constant, parameters: {value: 2, type: int16}, outputs: {y: z}}\n"
+     "  - {name: r, type: Relational, parameters: {operator: '<'}, inputs: {u1: x, u2: z}, outputs: {y: y}}\n",
+     "m.yaml:7:78: error: type mismatch: input 'u2' (signal 'z') of block 'r' (Relational) is int16, but input "
+     "'u1' (signal 'x') is double (convert one of them with a Convert block)\n"},
+    {"relational_of_two_sizes", "",
+     "  - {name: a, type: Constant, parameters: {value: [1, 2]}, outputs: {y: x}}\n"
+     "  - {name: b, type: Constant, parameters: {value: [1, 2, 3]}, outputs: {y: z}}\n"
+     "  - {name: r, type: Relational, parameters: {operator: '<'}, inputs: {u1: x, u2: z}, outputs: {y: y}}\n",
+     "m.yaml:7:78: error: size mismatch: input 'u2' (signal 'z') of block 'r' (Relational) is double[3], but "
+     "input 'u1' (signal 'x') is double[2] (compare inputs of one size, or one of them with a scalar)\n"},
+    {"dead_zone_start_above_end", "",
+     "  - {name: c, type: Constant, parameters: {value: [1, 2]}, outputs: {y: x}}\n"
+     "  - {name: d, type: DeadZone, parameters: {start: [-1, 0.5], end: 0.25}, inputs: {u: x}, outputs: {y: y}}\n",
+     "m.yaml:6:51: error: parameter 'start' of block 'd' (DeadZone) is 0.5, above its end, 0.25 (the dead zone "
+     "is start..end: give start <= end)\n"},
+    {"dead_zone_of_integers", "",
+     "  - {name: c, type: Constant, parameters: {value: 1, type: int16}, outputs: {y: x}}\n"
+     "  - {name: d, type: DeadZone, parameters: {start: -1, end: 1}, inputs: {u: x}, outputs: {y: y}}\n",
+     "m.yaml:6:73: error: type mismatch: block 'd' (DeadZone) computes in floating point, but input 'u' "
+     "(signal 'x') is int16 (convert it to single or double with a Convert block)\n"},
+    {"interpolation_of_one_breakpoint", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: f, type: Interpolation, parameters: {breakpoints: [0], table: [1]}, inputs: {u: x}, outputs: {y: "
+     "y}}\n",
+     "m.yaml:6:62: error: parameter 'breakpoints' of block 'f' (Interpolation) has 1 value, but it needs at "
+     "least 2 (give two or more breakpoints in increasing order)\n"},
+    {"interpolation_breakpoints_not_increasing", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: f, type: Interpolation, parameters: {breakpoints: [0, 1, 1, 2], table: [1, 2, 3, 4]}, inputs: {u: x},"
+     " outputs: {y: y}}\n",
+     "m.yaml:6:62: error: parameter 'breakpoints' of block 'f' (Interpolation) does not increase strictly: 1 "
+     "follows 1 (each breakpoint must be above the one before)\n"},
+    {"interpolation_table_of_another_size", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: f, type: Interpolation, parameters: {breakpoints: [0, 1, 2], table: [1, 2]}, inputs: {u: x},"
+     " outputs: {y: y}}\n",
+     "m.yaml:6:80: error: size mismatch: parameter 'table' of block 'f' (Interpolation) has 2 values for 3 "
+     "breakpoints (give one table value per breakpoint)\n"},
+    {"interpolation_flat_extrapolated_linearly", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: f, type: Interpolation, parameters: {breakpoints: [0, 1], table: [1, 2], method: flat,"
+     " extrapolation: linear}, inputs: {u: x}, outputs: {y: y}}\n",
+     "m.yaml:6:114: error: block 'f' (Interpolation) extrapolates linearly, but its method is 'flat', which "
+     "does not interpolate (give method: linear, or leave out extrapolation (clip))\n"},
+    {"interpolation_unknown_method", "",
+     "  - {name: c, type: Constant, parameters: {value: 1}, outputs: {y: x}}\n"
+     "  - {name: f, type: Interpolation, parameters: {breakpoints: [0, 1], table: [1, 2], method: cubic},"
+     " inputs: {u: x}, outputs: {y: y}}\n",
+     "m.yaml:6:93: error: block 'f' (Interpolation) has no method 'cubic' (give linear or nearest or flat or "
+     "above)\n"},
+    {"interpolation_table_of_another_type", "parameters:\n  t: {value: [1, 2], type: double}\n",
+     "  - {name: c, type: Constant, parameters: {value: 1, type: single}, outputs: {y: x}}\n"
+     "  - {name: f, type: Interpolation, parameters: {breakpoints: [0, 1], table: t}, inputs: {u: x},"
+     " outputs: {y: y}}\n",
+     "m.yaml:8:77: error: type mismatch: parameter 't' is double[2] but block 'f' (Interpolation) computes in "
+     "single (declare 't' with type: single)\n"},
 };
 
 class Mistyped : public ::testing::TestWithParam<Case> {};
@@ -456,6 +519,26 @@ TEST(Typing, ACompareGivesBooleansOfItsInputsSize) {
       "  - {name: n, type: Not, inputs: {u: big}, outputs: {y: small}}\n"};
   EXPECT_EQ(typed.type_of("big"), "boolean[3]");
   EXPECT_EQ(typed.type_of("small"), "boolean[3]");
+}
+
+TEST(Typing, ARelationalGivesBooleansOfTheLargerInput) {
+  const Typed typed{
+      "  - {name: a, type: Constant, parameters: {value: [1, 2, 3], type: uint8}, outputs: {y: x}}\n"
+      "  - {name: b, type: Constant, parameters: {value: 2, type: uint8}, outputs: {y: s}}\n"
+      "  - {name: r, type: Relational, parameters: {operator: '<'}, inputs: {u1: s, u2: x}, outputs: {y: below}}\n"
+      "  - {name: q, type: Relational, parameters: {operator: '=='}, inputs: {u1: s, u2: s}, outputs: {y: same}}\n"};
+  EXPECT_EQ(typed.type_of("below"), "boolean[3]");
+  EXPECT_EQ(typed.type_of("same"), "boolean");
+}
+
+TEST(Typing, DeadZoneAndInterpolationComputeInTheirInputsType) {
+  const Typed typed{
+      "  - {name: a, type: Constant, parameters: {value: [1, 2], type: single}, outputs: {y: x}}\n"
+      "  - {name: d, type: DeadZone, parameters: {start: -1, end: 1}, inputs: {u: x}, outputs: {y: zoned}}\n"
+      "  - {name: f, type: Interpolation, parameters: {breakpoints: [0, 1], table: [5, 6]}, inputs: {u: x},"
+      " outputs: {y: looked}}\n"};
+  EXPECT_EQ(typed.type_of("zoned"), "single[2]");
+  EXPECT_EQ(typed.type_of("looked"), "single[2]");
 }
 
 TEST(Typing, AMatrixTimesAVectorIsAVector) {

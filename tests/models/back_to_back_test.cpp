@@ -168,6 +168,7 @@ constexpr std::size_t setpoint = 0;
 namespace block_tour_parameter {
 constexpr std::size_t tf_den = 0;
 constexpr std::size_t ss_a = 1;
+constexpr std::size_t lut_table = 2;
 }  // namespace block_tour_parameter
 
 std::vector<Example> examples() {
@@ -260,8 +261,8 @@ std::vector<Example> examples() {
        },
        {"sensor_ready", "stop", "theta", "y", "wheel_speed_left", "wheel_speed_right", "distance", "battery_voltage",
         "linux_gains[0]", "gains_from", "y_pid", "requests_sent"}},
-      // Every block type the other examples leave out, fed by sources; at 1500 the transfer function's a1 and the
-      // state space's A[1][0] are tuned.
+      // Every block type the other examples leave out, fed by sources; at 1500 the transfer function's a1, the
+      // state space's A[1][0] and the middle value of the interpolation table are tuned.
       {"block_tour",
        block_tour::description,
        &block_tour::signals,
@@ -269,10 +270,12 @@ std::vector<Example> examples() {
        [](std::uint64_t tick, Interpreter& model) {
          if (tick == 1500) model.set_parameter(block_tour_parameter::tf_den, 1, -1.5);
          if (tick == 1500) model.set_parameter(block_tour_parameter::ss_a, 2, -0.09);
+         if (tick == 1500) model.set_parameter(block_tour_parameter::lut_table, 1, 1.25);
        },
        [](std::uint64_t tick) {
          if (tick == 1500) block_tour::parameters.tf_den[1] = -1.5;
          if (tick == 1500) block_tour::parameters.ss_a[2] = -0.09F;
+         if (tick == 1500) block_tour::parameters.lut_table[1] = 1.25F;
        },
        {},
        {"saw_sign",
@@ -293,6 +296,15 @@ std::vector<Example> examples() {
         "rate_back",
         "count_back",
         "halves[0]",
+        "above",
+        "under[0]",
+        "under[1]",
+        "zoned",
+        "shaped",
+        "bent",
+        "stepped",
+        "floored",
+        "raised",
         "rate",
         "filtered",
         "oscillator_y[0]",

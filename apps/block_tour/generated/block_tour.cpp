@@ -15,13 +15,15 @@
 #include "duet/hardware/hardware.hpp"
 #include "duet/blocks/average.hpp"
 #include "duet/blocks/bytes.hpp"
+#include "duet/blocks/interpolation.hpp"
 #include "duet/blocks/state_space.hpp"
 
 namespace block_tour {
 
 static_assert(offsetof(Parameters, tf_den) == 0, "the A2L's layout");
 static_assert(offsetof(Parameters, ss_a) == 24, "the A2L's layout");
-static_assert(sizeof(Parameters) == 40);
+static_assert(offsetof(Parameters, lut_table) == 40, "the A2L's layout");
+static_assert(sizeof(Parameters) == 56);
 static_assert(offsetof(Signals, ramp) == 0, "the A2L's layout");
 static_assert(offsetof(Signals, saw_centred) == 4, "the A2L's layout");
 static_assert(offsetof(Signals, square) == 8, "the A2L's layout");
@@ -41,31 +43,47 @@ static_assert(offsetof(Signals, word_back) == 80, "the A2L's layout");
 static_assert(offsetof(Signals, rate_back) == 84, "the A2L's layout");
 static_assert(offsetof(Signals, count_back) == 88, "the A2L's layout");
 static_assert(offsetof(Signals, halves) == 92, "the A2L's layout");
-static_assert(offsetof(Signals, rate) == 96, "the A2L's layout");
-static_assert(offsetof(Signals, filtered) == 104, "the A2L's layout");
-static_assert(offsetof(Signals, oscillator_y) == 112, "the A2L's layout");
-static_assert(offsetof(Signals, oscillator_mean) == 120, "the A2L's layout");
-static_assert(offsetof(Signals, smoothed) == 124, "the A2L's layout");
-static_assert(offsetof(Signals, tracked) == 128, "the A2L's layout");
-static_assert(offsetof(Signals, feedback) == 144, "the A2L's layout");
-static_assert(offsetof(Signals, estimate) == 152, "the A2L's layout");
-static_assert(offsetof(Signals, error) == 160, "the A2L's layout");
-static_assert(offsetof(Signals, command) == 164, "the A2L's layout");
-static_assert(offsetof(Signals, position) == 168, "the A2L's layout");
-static_assert(sizeof(Signals) == 176);
+static_assert(offsetof(Signals, above) == 96, "the A2L's layout");
+static_assert(offsetof(Signals, under) == 97, "the A2L's layout");
+static_assert(offsetof(Signals, zoned) == 100, "the A2L's layout");
+static_assert(offsetof(Signals, shaped) == 104, "the A2L's layout");
+static_assert(offsetof(Signals, bent) == 112, "the A2L's layout");
+static_assert(offsetof(Signals, stepped) == 116, "the A2L's layout");
+static_assert(offsetof(Signals, floored) == 120, "the A2L's layout");
+static_assert(offsetof(Signals, raised) == 124, "the A2L's layout");
+static_assert(offsetof(Signals, rate) == 128, "the A2L's layout");
+static_assert(offsetof(Signals, filtered) == 136, "the A2L's layout");
+static_assert(offsetof(Signals, oscillator_y) == 144, "the A2L's layout");
+static_assert(offsetof(Signals, oscillator_mean) == 152, "the A2L's layout");
+static_assert(offsetof(Signals, smoothed) == 156, "the A2L's layout");
+static_assert(offsetof(Signals, tracked) == 160, "the A2L's layout");
+static_assert(offsetof(Signals, feedback) == 176, "the A2L's layout");
+static_assert(offsetof(Signals, estimate) == 184, "the A2L's layout");
+static_assert(offsetof(Signals, error) == 192, "the A2L's layout");
+static_assert(offsetof(Signals, command) == 196, "the A2L's layout");
+static_assert(offsetof(Signals, position) == 200, "the A2L's layout");
+static_assert(sizeof(Signals) == 208);
 
 Parameters parameters{
     .tf_den = {1.0, -1.6, 0.68},
     .ss_a = {1.0F, 0.001F, -0.04F, 0.995F},
+    .lut_table = {-1.0F, 0.5F, 2.0F},
 };
 const Parameters reference_parameters{
     .tf_den = {1.0, -1.6, 0.68},
     .ss_a = {1.0F, 0.001F, -0.04F, 0.995F},
+    .lut_table = {-1.0F, 0.5F, 2.0F},
 };
 Memory memory{};
 
 namespace {
 
+constexpr double shape_breakpoints[] = {-0.5, 0.0, 0.3, 0.7};
+constexpr double shape_table[] = {2.0, 0.0, -1.0, 4.0};
+constexpr float bend_breakpoints[] = {0.2F, 0.9F, 1.5F};
+constexpr float stairs_breakpoints[] = {0.2F, 0.9F, 1.5F};
+constexpr float floor_breakpoints[] = {0.2F, 0.9F, 1.5F};
+constexpr float ceiling_breakpoints[] = {0.2F, 0.9F, 1.5F};
 constexpr double second_order_numerator[] = {0.0, 0.05, 0.03};
 constexpr float oscillator_b[] = {0.0F, 0.001F};
 constexpr float oscillator_c[] = {1.0F, 0.0F, 0.0F, 1.0F};
@@ -159,6 +177,20 @@ void step_rate_1() {
   thousandths = duet::blocks::gain(signals.saw_centred, 1000.0F);
   // to_int16 (Convert)
   signals.word = duet::blocks::convert<std::int16_t>(thousandths);
+  // compare_two (Relational)
+  signals.above = duet::blocks::compare(duet::blocks::CompareOperator::greater, signals.ramp, signals.reference);
+  // zone (DeadZone)
+  signals.zoned = duet::blocks::dead_zone(signals.saw_centred, -0.25F, 0.5F);
+  // shape (Interpolation)
+  signals.shaped = duet::blocks::interpolate(duet::blocks::InterpolationMethod::linear, duet::blocks::Extrapolation::linear, std::span<const double>{shape_breakpoints, 4}, std::span<const double>{shape_table, 4}, saw_wide);
+  // bend (Interpolation)
+  signals.bent = duet::blocks::interpolate(duet::blocks::InterpolationMethod::linear, duet::blocks::Extrapolation::clip, std::span<const float>{bend_breakpoints, 3}, std::span<const float>{p.lut_table, 3}, signals.ramp);
+  // stairs (Interpolation)
+  signals.stepped = duet::blocks::interpolate(duet::blocks::InterpolationMethod::nearest, duet::blocks::Extrapolation::clip, std::span<const float>{stairs_breakpoints, 3}, std::span<const float>{p.lut_table, 3}, signals.ramp);
+  // floor (Interpolation)
+  signals.floored = duet::blocks::interpolate(duet::blocks::InterpolationMethod::flat, duet::blocks::Extrapolation::clip, std::span<const float>{floor_breakpoints, 3}, std::span<const float>{p.lut_table, 3}, signals.ramp);
+  // ceiling (Interpolation)
+  signals.raised = duet::blocks::interpolate(duet::blocks::InterpolationMethod::above, duet::blocks::Extrapolation::clip, std::span<const float>{ceiling_breakpoints, 3}, std::span<const float>{p.lut_table, 3}, signals.ramp);
   // differentiate (FilteredDerivative)
   signals.rate = state.differentiate.output(signals.square, 0.5F, 20.0F);
   // lowest (MinMax)
@@ -190,6 +222,9 @@ void step_rate_1() {
   signals.inverse = duet::blocks::multiply(duet::blocks::multiply(duet::blocks::divide(1.0, signals.filtered), signals.step), saw_wide);
   // oscillator (StateSpace)
   state.oscillator.output(&signals.reference, oscillator_c, oscillator_d, signals.oscillator_y);
+  // compare_each (Relational)
+  signals.under[0] = duet::blocks::compare(duet::blocks::CompareOperator::less_equal, signals.oscillator_y[0], signals.saw_centred);
+  signals.under[1] = duet::blocks::compare(duet::blocks::CompareOperator::less_equal, signals.oscillator_y[1], signals.saw_centred);
   // average (Mean)
   signals.oscillator_mean = duet::blocks::mean(signals.oscillator_y, std::size_t{2});
   // window (MovingAverage)

@@ -4,7 +4,9 @@
 // each of them bit for bit. Sources: a Counter as a sawtooth, a square wave and a delayed boolean pulse train
 // (PulseGenerator), a double and a boolean Step. Arithmetic: Sign, MinMax (min and max of three), Product ("*/" and a
 // leading "/"). Bytes: BytePack big and little endian of int16, single, uint32 and boolean, ByteUnpack at offsets
-// (int16 big endian, single little endian, uint32, and two uint16). Dynamics: FilteredDerivative, an order-2
+// (int16 big endian, single little endian, uint32, and two uint16). Comparisons and tables: Relational between two
+// signals and between a vector and a scalar, DeadZone, Interpolation linear with linear extrapolation (double) and
+// clipped, nearest, flat and above over a tunable table (single). Dynamics: FilteredDerivative, an order-2
 // TransferFunction (its denominator tunable), a StateSpace with 2 states and 2 outputs (A tunable), Mean,
 // MovingAverage, a time-varying KalmanFilter with StateFeedback on its estimate, a steady-state KalmanFilter, and a
 // plant-free closed loop: a DiscretePid with clamping anti-windup driving an integrator, saturated after every step of
@@ -33,6 +35,7 @@ namespace block_tour {
 struct Parameters {
   double tf_den[3];
   float ss_a[4];
+  float lut_table[3];
 };
 
 // Signals that XCP measures or that outlive a step.
@@ -56,6 +59,14 @@ struct Signals {
   float rate_back;
   std::uint32_t count_back;
   std::uint16_t halves[2];
+  bool above;
+  bool under[2];
+  float zoned;
+  double shaped;
+  float bent;
+  float stepped;
+  float floored;
+  float raised;
   float rate;
   double filtered;
   float oscillator_y[2];

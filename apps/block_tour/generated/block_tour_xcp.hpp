@@ -24,7 +24,7 @@ inline constexpr std::uint32_t epk_address = 262144;
 
 // The EPK: this generation of the model, as the A2L's MOD_PAR says it; a master uploads it from epk_address
 // (or asks GET_ID) to know that it talks to the firmware the A2L describes.
-inline constexpr char epk[] = "block_tour 530d7ffba5398cff";
+inline constexpr char epk[] = "block_tour 26378bc39c4ddbda";
 
 // The slave's limits and the sizes of its tables (the model's xcp section, else duet's defaults).
 inline constexpr std::uint8_t max_cto = 248;

@@ -1,6 +1,6 @@
 #pragma once
-// Saturation, absolute value, sign, minimum and maximum, and selection (Simulink's Saturation, Abs, Sign, MinMax and
-// Switch). Pure and interrupt-safe.
+// Saturation, dead zone, absolute value, sign, minimum and maximum, and selection (Simulink's Saturation, Dead Zone,
+// Abs, Sign, MinMax and Switch). Pure and interrupt-safe.
 
 #include <limits>
 #include <type_traits>
@@ -17,6 +17,17 @@ constexpr T saturate(T u, T lower, T upper) {
   if (u > upper) return upper;
   if (u < lower) return lower;
   return u;
+}
+
+// Simulink's Dead Zone: 0 for start <= u <= end, u - end above end, u - start below start, tested in the order
+// Simulink's code tests them (u > end, then u >= start). Inside the zone the output is +0.0, also for u = -0.0; a NaN
+// fails both tests and gives u - start, a NaN. Floating point only: how the integer block overflows is an option of
+// Simulink's that duet does not model. Precondition: start <= end; if not, u > end is tested first.
+template <Floating T>
+constexpr T dead_zone(T u, T start, T end) {
+  if (u > end) return u - end;
+  if (u >= start) return T{0};
+  return u - start;
 }
 
 // |u|. Floating point as IEEE 754 defines it: |-0.0| = +0.0 and |NaN| is a NaN. The most negative integer has no
