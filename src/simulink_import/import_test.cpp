@@ -139,7 +139,10 @@ TEST(Import, EachBlockComputesWhatItsSimulinkBlockDoes) {
   for (std::size_t k = 0; k < ramp.size(); ++k) EXPECT_NEAR(ramp[k], 0.2 * static_cast<double>(k), 1e-12) << k;
   EXPECT_EQ(steps("first"), Steps(5, 2.0));  // Mux then Demux
   EXPECT_EQ(steps("second"), Steps(5, 3.0));
-  EXPECT_EQ(steps("tagged"), Steps(5, 3.0));  // through Goto and From
+  EXPECT_EQ(steps("tagged"), Steps(5, 3.0));      // through Goto and From
+  EXPECT_EQ(steps("less"), Steps(5, 1.0));        // u < c
+  EXPECT_EQ(steps("beyond"), Steps(5, 1.0));      // 2 beyond the dead zone [-1, 1]: 2 - 1
+  EXPECT_EQ(steps("looked_up"), Steps(5, 20.0));  // between (1, 10) and (4, 40): 10 + 30 * (2 - 1) / 3
   EXPECT_EQ(verdict(imported, "signal_chain/late").what, "3 UnitDelays in a row");
   EXPECT_EQ(verdict(imported, "signal_chain/end").what, "nothing to bring over");
 }
