@@ -420,7 +420,7 @@ void transfer_function(ImportContext& context) {
   const auto a0_is_one = context.raw("a0EqualsOne");
   if (!numerator || !denominator || !initial || !a0_is_one) return;
   if (*initial != 0) {
-    context.refuse("InitialStates " + std::to_string(*initial) + ": duet's TransferFunction starts at rest");
+    context.refuse("InitialStates " + yaml_number(*initial) + ": duet's TransferFunction starts at rest");
     return;
   }
   if (numerator->rows != 1 || denominator->rows != 1 || numerator->count() > denominator->count()) {
@@ -430,7 +430,7 @@ void transfer_function(ImportContext& context) {
     return;
   }
   if (*a0_is_one == "on" && denominator->elements.front() != 1) {
-    context.refuse("a0EqualsOne on with a0 = " + std::to_string(denominator->elements.front()) +
+    context.refuse("a0EqualsOne on with a0 = " + yaml_number(denominator->elements.front()) +
                    ": Simulink then ignores a0, duet divides by it");
     return;
   }

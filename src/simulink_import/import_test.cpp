@@ -193,5 +193,158 @@ TEST(Import, RefusesWhatItCannotProveEqualAndSaysWhereAndWhy) {
   EXPECT_TRUE(verdict(without_variables, "pid_loop/Limiter/Saturation").imported);
 }
 
+// A model m of u -> X -> y, X the block under test.
+Block block_x(std::string type, std::map<std::string, std::string> parameters = {}) {
+  Block x{.type = std::move(type), .name = "X", .sid = "2", .parameters = std::move(parameters)};
+  return x;
+}
+
+SimulinkModel around(Block x, std::map<std::string, std::string> solver = {{"SolverName", "FixedStepDiscrete"},
+                                                                           {"FixedStep", "0.01"}}) {
+  SimulinkModel model{.name = "m", .release = "R2022b", .format = "slx (systems/)"};
+  model.solver.parameters = std::move(solver);
+  model.root.blocks.push_back({.type = "Inport", .name = "u", .sid = "1"});
+  model.root.blocks.push_back(std::move(x));
+  model.root.blocks.push_back({.type = "Outport", .name = "y", .sid = "3"});
+  model.root.lines.push_back({.name = {}, .source = Endpoint{"u", "out", 1}, .destinations = {{"X", "in", 1}}});
+  model.root.lines.push_back({.name = {}, .source = Endpoint{"X", "out", 1}, .destinations = {{"y", "in", 1}}});
+  return model;
+}
+
+// A subsystem X whose contents are an Inport, the given port block and a Gain to an Outport.
+Block subsystem_x(Block port_block, std::map<std::string, std::string> parameters = {}) {
+  System inside;
+  inside.blocks.push_back({.type = "Inport", .name = "in", .sid = "5"});
+  inside.blocks.push_back(std::move(port_block));
+  inside.blocks.push_back({.type = "Gain", .name = "g", .sid = "7"});
+  inside.blocks.push_back({.type = "Outport", .name = "out", .sid = "8"});
+  inside.lines.push_back({.name = {}, .source = Endpoint{"in", "out", 1}, .destinations = {{"g", "in", 1}}});
+  inside.lines.push_back({.name = {}, .source = Endpoint{"g", "out", 1}, .destinations = {{"out", "in", 1}}});
+  Block x = block_x("SubSystem", std::move(parameters));
+  x.systems.push_back(std::move(inside));
+  return x;
+}
+
+struct Unsupported {
+  std::string label;
+  SimulinkModel model;
+  std::string message;
+};
+
+class ImportRefuses : public ::testing::TestWithParam<Unsupported> {};
+
+TEST_P(ImportRefuses, WithThePathAndTheReason) {
+  const ImportResult result = import_simulink(GetParam().model, {});
+  ASSERT_EQ(result.problems.size(), 1U) << ::testing::PrintToString(result.problems);
+  EXPECT_EQ(result.problems[0], GetParam().message);
+  EXPECT_TRUE(result.model_text.empty());
+}
+
+const std::string discrete_only = "a continuous block: duet imports discrete models only (discretise it in Simulink)";
+
+INSTANTIATE_TEST_SUITE_P(
+    Variants, ImportRefuses,
+    ::testing::Values(
+        Unsupported{"continuous", around(block_x("Integrator")), "m/X (Integrator): " + discrete_only},
+        Unsupported{"s_function", around(block_x("S-Function")),
+                    "m/X (S-Function): an S-Function: its code is not in the model"},
+        Unsupported{
+            "matlab_function",
+            around(subsystem_x({.type = "Gain", .name = "k", .sid = "6"}, {{"SFBlockType", "MATLAB Function"}})),
+            "m/X (SubSystem): a MATLAB Function block: its code is MATLAB or Stateflow, which duet does not "
+            "translate"},
+        Unsupported{"chart", around(subsystem_x({.type = "Gain", .name = "k", .sid = "6"}, {{"SFBlockType", "Chart"}})),
+                    "m/X (SubSystem): a Chart block: its code is MATLAB or Stateflow, which duet does not translate"},
+        Unsupported{"unknown_type", around(block_x("Fcn")),
+                    "m/X (Fcn): no duet block has the semantics of a Fcn block (docs/IMPORT.md lists the ones it has)"},
+        Unsupported{"unknown_link",
+                    around(block_x("Reference", {{"SourceType", "Counter Free-Running"},
+                                                 {"SourceBlock", "simulink/Sources/Counter\nFree-Running"}})),
+                    "m/X (Counter Free-Running): a link to the library block 'simulink/Sources/Counter\nFree-Running' "
+                    "(Counter Free-Running), which duet has no implementation of (docs/IMPORT.md lists the ones it "
+                    "has)"},
+        Unsupported{"matrix_gain", around(block_x("Gain", {{"Multiplication", "Matrix(K*u)"}})),
+                    "m/X (Gain): Multiplication is 'Matrix(K*u)': only the element-wise gain has duet's Gain's "
+                    "semantics (a matrix gain: MatrixMultiply)"},
+        Unsupported{"unresolved", around(block_x("Gain", {{"Gain", "Kx"}})),
+                    "m/X (Gain): 'Kx': column 1: unresolved name 'Kx'"},
+        Unsupported{"continuous_time", around(block_x("UnitDelay", {{"SampleTime", "0"}})),
+                    "m/X (UnitDelay): SampleTime '0' is continuous (0): duet imports discrete models only"},
+        Unsupported{"offset", around(block_x("UnitDelay", {{"SampleTime", "[0.01 0.005]"}})),
+                    "m/X (UnitDelay): SampleTime '[0.01 0.005]' has an offset, which duet's rates do not"},
+        Unsupported{"no_multiple", around(block_x("UnitDelay", {{"SampleTime", "0.015"}})),
+                    "m/X (UnitDelay): SampleTime 0.015 s is not a whole multiple of the base period of 10000 us"},
+        Unsupported{"backward_euler",
+                    around(block_x("DiscreteIntegrator", {{"IntegratorMethod", "Integration: Backward Euler"}})),
+                    "m/X (DiscreteIntegrator): IntegratorMethod is 'Integration: Backward Euler': duet's "
+                    "DiscreteIntegrator integrates by forward Euler only"},
+        Unsupported{"one_input_sum", around(block_x("Sum", {{"Inputs", "+"}})),
+                    "m/X (Sum): one input (Inputs '+') combines its elements, which duet's Sum does not: use two "
+                    "inputs or a Mux"},
+        Unsupported{"commented", around(block_x("Gain", {{"Commented", "on"}})),
+                    "m/X (Gain): commented out (on): refused, uncomment or delete it"},
+        Unsupported{"nxor", around(block_x("Logic", {{"Operator", "NXOR"}})),
+                    "m/X (Logic): Operator NXOR is not one of duet's Logic (AND, OR, XOR, NAND, NOR, NOT)"},
+        Unsupported{"inherited_conversion", around(block_x("DataTypeConversion")),
+                    "m/X (DataTypeConversion): OutDataTypeStr 'Inherit: Inherit via back propagation': duet's "
+                    "Convert needs the output type written out (double, single, int8 ... uint32, boolean)"},
+        Unsupported{"two_dimensional_table", around(block_x("Lookup_n-D")),
+                    "m/X (Lookup_n-D): NumberOfTableDimensions is '2': duet's Interpolation has one dimension"},
+        Unsupported{"delay_reset", around(block_x("Delay", {{"ExternalReset", "Rising"}})),
+                    "m/X (Delay): ExternalReset is 'Rising': a delay with an external reset is not imported"},
+        Unsupported{"transfer_function_state", around(block_x("DiscreteTransferFcn", {{"InitialStates", "1"}})),
+                    "m/X (DiscreteTransferFcn): InitialStates 1: duet's TransferFunction starts at rest"},
+        Unsupported{"pid_ideal",
+                    around(block_x("Reference",
+                                   {{"SourceType", "PID 1dof"}, {"TimeDomain", "Discrete-time"}, {"Form", "Ideal"}})),
+                    "m/X (PID 1dof): Form is 'Ideal': duet's DiscretePid is the parallel form"},
+        Unsupported{"global_goto", around(block_x("Goto", {{"TagVisibility", "global"}})),
+                    "m/X (Goto): a scoped or global tag: refused, use lines or local tags"},
+        Unsupported{"single_tasking_rate_transition",
+                    around(block_x("RateTransition"),
+                           {{"SolverName", "FixedStepDiscrete"}, {"FixedStep", "0.01"}, {"EnableMultiTasking", "off"}}),
+                    "m/X (RateTransition): the model runs single-tasking, where a rate transition passes its value "
+                    "on at once; duet's rate transitions are those of multitasking (set the solver's tasking mode to "
+                    "multitasking)"},
+        Unsupported{
+            "function_call_unmapped",
+            around(subsystem_x(
+                {.type = "TriggerPort", .name = "f", .sid = "6", .parameters = {{"TriggerType", "function-call"}}})),
+            "m/X (SubSystem): a function-call subsystem: map it to an interrupt with --interrupt "
+            "'m/X=IRQ:PRIORITY'"},
+        Unsupported{"trigger_compatibility", around(subsystem_x({.type = "TriggerPort", .name = "t", .sid = "6"})),
+                    "m/X (SubSystem): its trigger's InitialTriggerSignalState is not 'zero': duet's edge detection "
+                    "starts from zero (set it to zero in Simulink)"},
+        Unsupported{
+            "enable_reset",
+            around(subsystem_x(
+                {.type = "EnablePort", .name = "e", .sid = "6", .parameters = {{"StatesWhenEnabling", "reset"}}})),
+            "m/X (SubSystem): its enable port resets states or shows an output, which duet's enabled "
+            "subsystems do not"},
+        Unsupported{"unconnected", around(block_x("Sum", {{"Inputs", "+++"}})),
+                    "m/X (Sum): its input 2 is not connected"},
+        Unsupported{"variable_step", around(block_x("Gain"), {{"SolverName", "ode45"}}),
+                    "m: the solver ode45 is variable-step; duet runs fixed-step discrete models (set a fixed-step "
+                    "solver in Simulink)"},
+        Unsupported{"auto_step", around(block_x("Gain"), {{"SolverName", "FixedStepAuto"}, {"FixedStep", "auto"}}),
+                    "m: the fixed step is 'auto'; give the base period with --base-period-us"},
+        Unsupported{"no_solver", around(block_x("Gain"), {}),
+                    "m: the fixed step is 'not in the file'; give the base period with --base-period-us"}),
+    [](const ::testing::TestParamInfo<Unsupported>& variant) { return variant.param.label; });
+
+// An algebraic loop imports (each block is fine) but the model does not check: duet says where the loop is.
+TEST(Import, AnAlgebraicLoopIsFoundWhenTheModelIsChecked) {
+  SimulinkModel model = around(block_x("Sum", {{"Inputs", "++"}}));
+  model.root.lines[1].destinations.push_back({"X", "in", 2});  // X's output back into its second input
+  const ImportResult result = import_simulink(model, {});
+  ASSERT_TRUE(result.problems.empty()) << ::testing::PrintToString(result.problems);
+  auto parsed = model::parse_model(result.model_text, "m.yaml");
+  ASSERT_TRUE(parsed) << parsed.error();
+  const model::ProgramBuild build = model::build_program(parsed.value());
+  ASSERT_FALSE(build.program);
+  ASSERT_FALSE(build.diagnostics.empty());
+  EXPECT_THAT(model::format("m.yaml", build.diagnostics.front()), HasSubstr("algebraic loop")) << result.model_text;
+}
+
 }  // namespace
 }  // namespace duet::simulink_import
