@@ -49,6 +49,11 @@ TEST(ImportCommand, AModelWithItsVariablesIsWrittenCheckedAndReported) {
   const Outcome simulated =
       run({"sim", output, "--duration", "0.05", "--csv", (folder.path() / "t.csv").string(), "--no-plot"});
   EXPECT_EQ(simulated.exit_code, ExitCode::success) << simulated.err;
+  // It generates, and its variable Kp stays a tunable parameter of that name: a CHARACTERISTIC of the A2L.
+  const std::string generated = (folder.path() / "generated").string();
+  const Outcome gen = run({"gen", output, "-o", generated});
+  ASSERT_EQ(gen.exit_code, ExitCode::success) << gen.err;
+  EXPECT_THAT(read_text_file(generated + "/tilt_loop.a2l").value(), HasSubstr("/begin CHARACTERISTIC Kp "));
 }
 
 TEST(ImportCommand, WithoutItsVariablesNothingIsWrittenAndEveryProblemIsSaid) {
@@ -65,7 +70,7 @@ TEST(ImportCommand, WithoutItsVariablesNothingIsWrittenAndEveryProblemIsSaid) {
   const Outcome no_gain =
       run({"import", "simulink", tilt_loop_slx(folder.path()).string(), "--base-period-us", "10000", "-o", output});
   EXPECT_EQ(no_gain.exit_code, ExitCode::failure);
-  EXPECT_THAT(no_gain.err, HasSubstr("duet import simulink: tilt_loop/Proportional\nGain (Gain): 'Kp': column 1: "
+  EXPECT_THAT(no_gain.err, HasSubstr("duet import simulink: tilt_loop/Proportional Gain (Gain): 'Kp': column 1: "
                                      "unresolved name 'Kp'\n"));
 }
 

@@ -24,6 +24,16 @@ std::optional<TextPairs> numbered_inputs(ImportContext& context, std::size_t cou
   return inputs;
 }
 
+// Whether the block computes in its inputs' type, as duet's arithmetic blocks do: an output type set explicitly
+// (OutDataTypeStr "single" on a Gain fed doubles) is a conversion duet's blocks do not make, and refused.
+bool inherits_type(ImportContext& context) {
+  const auto found = context.block().parameters.find("OutDataTypeStr");
+  if (found == context.block().parameters.end() || found->second.starts_with("Inherit:")) return true;
+  context.refuse("OutDataTypeStr '" + found->second + "': duet's " + context.block().type +
+                 " computes in its input's type (convert with a DataTypeConversion block)");
+  return false;
+}
+
 // A block of one input u and one output y, its parameters given, at its SampleTime when it has one.
 void unary(ImportContext& context, const std::string& type, TextPairs parameters, bool sampled,
            const std::string& what) {
@@ -79,6 +89,7 @@ void constant(ImportContext& context) {
 }
 
 void gain(ImportContext& context) {
+  if (!inherits_type(context)) return;
   if (!context.require("Multiplication", "Element-wise(K.*u)",
                        "only the element-wise gain has duet's Gain's semantics (a matrix gain: MatrixMultiply)"))
     return;
@@ -88,6 +99,7 @@ void gain(ImportContext& context) {
 }
 
 void sum(ImportContext& context) {
+  if (!inherits_type(context)) return;
   const auto sum_signs = signs(context, '+');
   if (!sum_signs) return;
   const auto inputs = numbered_inputs(context, sum_signs->size());
@@ -102,6 +114,7 @@ void sum(ImportContext& context) {
 }
 
 void product(ImportContext& context) {
+  if (!inherits_type(context)) return;
   if (!context.require("Multiplication", "Element-wise(.*)", "only the element-wise product is duet's Product")) return;
   const auto product_signs = signs(context, '*');
   if (!product_signs) return;
@@ -116,10 +129,13 @@ void product(ImportContext& context) {
                "Product " + *product_signs);
 }
 
-void abs(ImportContext& context) { unary(context, "Abs", {}, false, "Abs"); }
+void abs(ImportContext& context) {
+  if (inherits_type(context)) unary(context, "Abs", {}, false, "Abs");
+}
 void sign(ImportContext& context) { unary(context, "Sign", {}, false, "Sign"); }
 
 void saturation(ImportContext& context) {
+  if (!inherits_type(context)) return;
   for (const char* source : {"UpperLimitSource", "LowerLimitSource"}) {
     if (context.block().parameters.count(source) != 0 &&
         !context.require(source, "Dialog", "limits from input ports are not duet's Saturation's"))
@@ -227,6 +243,7 @@ void logic(ImportContext& context) {
 }
 
 void min_max(ImportContext& context) {
+  if (!inherits_type(context)) return;
   const auto function = context.raw("Function");
   const auto count = context.scalar("Inputs");
   if (!function || !count) return;

@@ -267,7 +267,7 @@ class Importer final : public ImportModel {
       }
       if (block.type == "Inport" || block.type == "Outport") {
         port_block(block, block_path, root, inputs, outputs, subsystem_inputs, subsystem_outputs, blocks, names,
-                   verdict);
+                   signals, verdict);
         continue;
       }
       if (block.type == "Goto" || block.type == "From") {
@@ -379,7 +379,7 @@ class Importer final : public ImportModel {
 
   void port_block(const Block& block, const std::string& block_path, bool root, const std::vector<std::string>& inputs,
                   const std::vector<std::string>& outputs, TextPairs* subsystem_inputs, TextPairs* subsystem_outputs,
-                  std::vector<DuetBlock>& blocks, Names& names, Verdict& verdict) {
+                  std::vector<DuetBlock>& blocks, Names& names, Names& signals, Verdict& verdict) {
     const bool inport = block.type == "Inport";
     const std::string port = block.parameters.count("Port") ? trimmed(block.parameters.at("Port")) : "1";
     const std::string name = identifier(block.name);
@@ -408,10 +408,31 @@ class Importer final : public ImportModel {
       }
     }
     if (root) {
+      // A plant hands doubles; an inport of another type converts them, as its OutDataTypeStr says.
+      const auto declared = block.parameters.find("OutDataTypeStr");
+      static const std::set<std::string, std::less<>> types{"double", "single", "int8",   "int16",  "int32",
+                                                            "uint8",  "uint16", "uint32", "boolean"};
+      const bool typed = inport && declared != block.parameters.end() && declared->second != "double" &&
+                         !declared->second.starts_with("Inherit:");
+      if (typed && types.count(declared->second) == 0) {
+        verdict.what = "OutDataTypeStr '" + declared->second + "' is no type duet has";
+        refuse(verdict);
+        return;
+      }
+      std::string read = inport ? outputs[0] : std::string{};
+      if (typed) {
+        read = signals.unique(name + "_read");
+        blocks.push_back({.name = names.unique(name + "_as_" + declared->second),
+                          .type = "Convert",
+                          .parameters = {{"type", declared->second}},
+                          .inputs = {{"u", read}},
+                          .outputs = {{"y", outputs[0]}},
+                          .source = block_path + " (Inport " + port + "): its type, " + declared->second});
+      }
       DuetBlock made{.name = names.unique(name), .type = inport ? "PlantInput" : "PlantOutput"};
       made.parameters = {{"resource", yaml_string(std::string{inport ? "inport:" : "outport:"} + name)}};
       if (inport)
-        made.outputs = {{"y", outputs[0]}};
+        made.outputs = {{"y", read}};
       else
         made.inputs = {{"u", inputs[0]}};
       made.source = block_path + " (" + block.type + " " + port + ")";

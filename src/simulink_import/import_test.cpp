@@ -266,6 +266,9 @@ INSTANTIATE_TEST_SUITE_P(
         Unsupported{"matrix_gain", around(block_x("Gain", {{"Multiplication", "Matrix(K*u)"}})),
                     "m/X (Gain): Multiplication is 'Matrix(K*u)': only the element-wise gain has duet's Gain's "
                     "semantics (a matrix gain: MatrixMultiply)"},
+        Unsupported{"output_type", around(block_x("Gain", {{"OutDataTypeStr", "single"}})),
+                    "m/X (Gain): OutDataTypeStr 'single': duet's Gain computes in its input's type (convert with a "
+                    "DataTypeConversion block)"},
         Unsupported{"unresolved", around(block_x("Gain", {{"Gain", "Kx"}})),
                     "m/X (Gain): 'Kx': column 1: unresolved name 'Kx'"},
         Unsupported{"continuous_time", around(block_x("UnitDelay", {{"SampleTime", "0"}})),
@@ -331,6 +334,20 @@ INSTANTIATE_TEST_SUITE_P(
         Unsupported{"no_solver", around(block_x("Gain"), {}),
                     "m: the fixed step is 'not in the file'; give the base period with --base-period-us"}),
     [](const ::testing::TestParamInfo<Unsupported>& variant) { return variant.param.label; });
+
+// A root inport of a declared type converts what the plant hands (doubles) to it; the blocks after compute in it.
+TEST(Import, ARootInportOfADeclaredTypeConvertsThePlantsValue) {
+  SimulinkModel model = around(block_x("Gain", {{"Gain", "2"}}));
+  model.root.blocks[0].parameters["OutDataTypeStr"] = "single";
+  const ImportResult imported = import_simulink(model, {});
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  EXPECT_THAT(imported.model_text, HasSubstr("type: Convert\n    parameters: {type: single}\n    inputs: {u: u_read}"));
+  Ports plant{{{"inport:u", 0.1}}};
+  ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0, .record_plant = false}));
+  EXPECT_EQ(plant.written.at("outport:y"), static_cast<double>(2.0F * 0.1F));  // in single, not 0.2
+}
 
 // An algebraic loop imports (each block is fine) but the model does not check: duet says where the loop is.
 TEST(Import, AnAlgebraicLoopIsFoundWhenTheModelIsChecked) {
