@@ -90,9 +90,31 @@ void constant(ImportContext& context) {
 
 void gain(ImportContext& context) {
   if (!inherits_type(context)) return;
-  if (!context.require("Multiplication", "Element-wise(K.*u)",
-                       "only the element-wise gain has duet's Gain's semantics (a matrix gain: MatrixMultiply)"))
+  const auto multiplication = context.raw("Multiplication");
+  if (!multiplication) return;
+  if (*multiplication == "Matrix(K*u)" || *multiplication == "Matrix(K*u) (u vector)") {
+    // K times the input taken as a column: a Constant K and a MatrixMultiply.
+    const auto k = context.parameter("Gain");
+    const auto u = context.input(1);
+    const auto period = context.period();
+    if (!k || !u || !period) return;
+    const std::string matrix = context.new_signal_name(context.block_name + "_k");
+    context.emit({.name = context.new_block_name(context.block_name + "_k"),
+                  .type = "Constant",
+                  .parameters = {{"value", *k}},
+                  .outputs = {{"y", matrix}}},
+                 "Constant K " + *k);
+    context.emit({.type = "MatrixMultiply",
+                  .inputs = {{"a", matrix}, {"b", *u}},
+                  .outputs = {{"y", context.output(1)}},
+                  .period = *period},
+                 "MatrixMultiply K u");
     return;
+  }
+  if (*multiplication != "Element-wise(K.*u)") {
+    context.refuse("Multiplication '" + *multiplication + "': duet multiplies element-wise or K*u (Matrix(K*u))");
+    return;
+  }
   const auto k = context.parameter("Gain");
   if (!k) return;
   unary(context, "Gain", {{"k", *k}}, true, "Gain k: " + *k);
@@ -426,7 +448,9 @@ void zero_order_hold(ImportContext& context) {
   unary(context, "RateTransition", {}, true, "RateTransition (a zero-order hold samples at its period)");
 }
 
-void transfer_function(ImportContext& context) {
+// Simulink's Discrete Transfer Fcn takes its coefficients in descending powers of z, its Discrete Filter in
+// ascending powers of z^-1; either becomes duet's TransferFunction (descending powers of z, both of one length).
+void transfer_function_of(ImportContext& context, bool powers_of_inverse_z) {
   for (const char* source : {"NumeratorSource", "DenominatorSource"}) {
     if (!context.require(source, "Dialog", "coefficients from ports are not duet's TransferFunction's")) return;
   }
@@ -451,11 +475,16 @@ void transfer_function(ImportContext& context) {
                    ": Simulink then ignores a0, duet divides by it");
     return;
   }
-  // Both in descending powers of z, as long as the denominator: the numerator padded with leading zeros.
+  // Both in descending powers of z, as long as the denominator: a transfer function's numerator padded with leading
+  // zeros; a filter's coefficients multiplied by z^N, which pads each at its end.
   Value padded = *denominator;
   std::fill(padded.elements.begin(), padded.elements.end(), 0.0);
-  std::copy(numerator->elements.begin(), numerator->elements.end(),
-            padded.elements.end() - static_cast<std::ptrdiff_t>(numerator->count()));
+  if (powers_of_inverse_z) {
+    std::copy(numerator->elements.begin(), numerator->elements.end(), padded.elements.begin());
+  } else {
+    std::copy(numerator->elements.begin(), numerator->elements.end(),
+              padded.elements.end() - static_cast<std::ptrdiff_t>(numerator->count()));
+  }
   const auto as_text = [](const Value& value) {
     std::string text = "[";
     for (std::size_t k = 0; k < value.count(); ++k) text += (k == 0 ? "" : ", ") + yaml_number(value.elements[k]);
@@ -464,6 +493,9 @@ void transfer_function(ImportContext& context) {
   unary(context, "TransferFunction", {{"numerator", as_text(padded)}, {"denominator", as_text(*denominator)}}, true,
         "TransferFunction " + as_text(padded) + " / " + as_text(*denominator));
 }
+
+void transfer_function(ImportContext& context) { transfer_function_of(context, false); }
+void discrete_filter(ImportContext& context) { transfer_function_of(context, true); }
 
 void state_space(ImportContext& context) {
   TextPairs parameters;
@@ -575,6 +607,63 @@ void lookup(ImportContext& context) {
         true, "Interpolation (" + method->second + ")");
 }
 
+void trigonometry(ImportContext& context) {
+  const auto operation = context.raw("Operator");
+  if (!operation || !context.require("ApproximationMethod", "None", "duet computes without approximation methods"))
+    return;
+  if (*operation != "atan2") {
+    context.refuse("Operator " + *operation + ": of the trigonometric functions duet has atan2");
+    return;
+  }
+  const auto y = context.input(1);
+  const auto x = context.input(2);
+  if (!y || !x) return;
+  context.emit({.type = "Atan2", .inputs = {{"y_in", *y}, {"x_in", *x}}, .outputs = {{"y", context.output(1)}}},
+               "Atan2");
+}
+
+// The functions of the Math block that are duet's arithmetic: the square, and the reciprocal.
+void math(ImportContext& context) {
+  const auto operation = context.raw("Operator");
+  const auto u = context.input(1);
+  if (!operation || !u) return;
+  if (*operation == "square") {
+    context.emit({.type = "Product",
+                  .parameters = {{"signs", quoted("**")}},
+                  .inputs = {{"u1", *u}, {"u2", *u}},
+                  .outputs = {{"y", context.output(1)}}},
+                 "Product u u");
+  } else if (*operation == "reciprocal") {
+    const std::string one = context.new_signal_name(context.block_name + "_one");
+    context.emit({.name = context.new_block_name(context.block_name + "_one"),
+                  .type = "Constant",
+                  .parameters = {{"value", "1"}},
+                  .outputs = {{"y", one}}},
+                 "Constant 1");
+    context.emit({.type = "Product",
+                  .parameters = {{"signs", quoted("*/")}},
+                  .inputs = {{"u1", one}, {"u2", *u}},
+                  .outputs = {{"y", context.output(1)}}},
+                 "Product 1 / u");
+  } else {
+    context.refuse("Operator " + *operation + ": of the Math block's functions duet has square and reciprocal");
+  }
+}
+
+// The Discrete Derivative (a library link): K (u(k) - u(k-1)) / Ts, from a previous input of 0.
+void discrete_derivative(ImportContext& context) {
+  const auto initial = context.scalar("ICPrevScaledInput");
+  const auto gain_value = context.parameter("gainval");
+  if (!initial || !gain_value) return;
+  if (*initial != 0) {
+    context.refuse("ICPrevScaledInput " + yaml_number(*initial) + ": duet's DiscreteDerivative starts from 0");
+    return;
+  }
+  // Its sample time, where the link's values name one; inherited otherwise.
+  const bool sampled = context.block().mask_parameters.count("SampleTime") != 0;
+  unary(context, "DiscreteDerivative", {{"gain", *gain_value}}, sampled, "DiscreteDerivative K " + *gain_value);
+}
+
 }  // namespace
 
 BlockMapping mapping_for(const std::string& type) {
@@ -606,6 +695,10 @@ BlockMapping mapping_for(const std::string& type) {
       {"RelationalOperator", relational},
       {"DeadZone", dead_zone},
       {"Lookup_n-D", lookup},
+      {"Trigonometry", trigonometry},
+      {"Math", math},
+      {"Discrete Derivative", discrete_derivative},
+      {"DiscreteFilter", discrete_filter},
   };
   const auto found = mappings.find(type);
   return found == mappings.end() ? nullptr : found->second;

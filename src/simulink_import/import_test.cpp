@@ -139,10 +139,16 @@ TEST(Import, EachBlockComputesWhatItsSimulinkBlockDoes) {
   for (std::size_t k = 0; k < ramp.size(); ++k) EXPECT_NEAR(ramp[k], 0.2 * static_cast<double>(k), 1e-12) << k;
   EXPECT_EQ(steps("first"), Steps(5, 2.0));  // Mux then Demux
   EXPECT_EQ(steps("second"), Steps(5, 3.0));
-  EXPECT_EQ(steps("tagged"), Steps(5, 3.0));      // through Goto and From
-  EXPECT_EQ(steps("less"), Steps(5, 1.0));        // u < c
-  EXPECT_EQ(steps("beyond"), Steps(5, 1.0));      // 2 beyond the dead zone [-1, 1]: 2 - 1
-  EXPECT_EQ(steps("looked_up"), Steps(5, 20.0));  // between (1, 10) and (4, 40): 10 + 30 * (2 - 1) / 3
+  EXPECT_EQ(steps("tagged"), Steps(5, 3.0));                      // through Goto and From
+  EXPECT_EQ(steps("less"), Steps(5, 1.0));                        // u < c
+  EXPECT_EQ(steps("beyond"), Steps(5, 1.0));                      // 2 beyond the dead zone [-1, 1]: 2 - 1
+  EXPECT_EQ(steps("looked_up"), Steps(5, 20.0));                  // between (1, 10) and (4, 40): 10 + 30 * (2 - 1) / 3
+  EXPECT_NEAR(steps("angle")[0], std::atan2(2.0, 3.0), 1e-13);    // atan2(u, c)
+  EXPECT_EQ(steps("squared"), Steps(5, 4.0));                     // u^2
+  EXPECT_EQ(steps("inverse"), Steps(1, 1.0 / 3.0));               // 1 / c: of constants, so computed and written once
+  EXPECT_EQ(steps("slope"), (Steps{20, 0, 0, 0, 0}));             // (u(k) - u(k-1)) / 0.1 from a previous 0
+  EXPECT_EQ(steps("filtered"), (Steps{2, 3, 3.5, 3.75, 3.875}));  // 1 / (1 - 0.5 z^-1): y(k) = 0.5 y(k-1) + u(k)
+  EXPECT_EQ(steps("matrix"), Steps(5, 8.0));                      // [1 2; 3 4] * [u; c], the first element
   EXPECT_EQ(verdict(imported, "signal_chain/late").what, "3 UnitDelays in a row");
   EXPECT_EQ(verdict(imported, "signal_chain/end").what, "nothing to bring over");
 }
@@ -263,9 +269,10 @@ INSTANTIATE_TEST_SUITE_P(
                     "m/X (Counter Free-Running): a link to the library block 'simulink/Sources/Counter\nFree-Running' "
                     "(Counter Free-Running), which duet has no implementation of (docs/IMPORT.md lists the ones it "
                     "has)"},
-        Unsupported{"matrix_gain", around(block_x("Gain", {{"Multiplication", "Matrix(K*u)"}})),
-                    "m/X (Gain): Multiplication is 'Matrix(K*u)': only the element-wise gain has duet's Gain's "
-                    "semantics (a matrix gain: MatrixMultiply)"},
+        Unsupported{"matrix_gain", around(block_x("Gain", {{"Multiplication", "Matrix(u*K)"}})),
+                    "m/X (Gain): Multiplication 'Matrix(u*K)': duet multiplies element-wise or K*u (Matrix(K*u))"},
+        Unsupported{"sine", around(block_x("Trigonometry")),
+                    "m/X (Trigonometry): Operator sin: of the trigonometric functions duet has atan2"},
         Unsupported{"output_type", around(block_x("Gain", {{"OutDataTypeStr", "single"}})),
                     "m/X (Gain): OutDataTypeStr 'single': duet's Gain computes in its input's type (convert with a "
                     "DataTypeConversion block)"},
