@@ -153,6 +153,27 @@ TEST(Import, EachBlockComputesWhatItsSimulinkBlockDoes) {
   EXPECT_EQ(verdict(imported, "signal_chain/end").what, "nothing to bring over");
 }
 
+// The oldest layout (R2014a): configuration set and BlockParameterDefaults inline in blockdiagram.xml, the mask as a
+// MaskObject; the mask's value names a variable, evaluated outside the subsystem. y(k) = u(k) + 0.5 y(k-1).
+TEST(Import, TheOldestLayoutWithItsInlineDefaultsConfigurationAndMaskObject) {
+  const auto model = read_slx_model(parts_of(testing / "slx_r2014a"), "scaled_lag.slx");
+  ASSERT_TRUE(model) << model.error();
+  EXPECT_EQ(model.value().release, "R2014a");
+  EXPECT_EQ(model.value().defaults.at("Sum").at("Inputs"), "++");
+  EXPECT_EQ(model.value().solver.parameters.at("FixedStep"), "0.002");
+  ImportOptions options;
+  options.variables["pole"] = Value::scalar(0.5);
+  const ImportResult imported = import_simulink(model.value(), options);
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  EXPECT_THAT(imported.model_text, HasSubstr("base_period_us: 2000\n"));
+  EXPECT_EQ(verdict(imported, "scaled_lag/Lag/pole").what, "Gain k: 0.5");  // the mask's a, a literal
+  Ports plant{{{"inport:u", 1.0}}};
+  ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0.006, .record_plant = false}));
+  EXPECT_EQ(plant.history.at("outport:y"), (std::vector<double>{1, 1.5, 1.75, 1.875}));
+}
+
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
 // triggered on the clock's rising edges (its count advancing only then), and a function-call subsystem that
 // --interrupt makes an interrupt task, fed and read through rate transitions; the interrupt block that called it in
