@@ -664,6 +664,51 @@ void discrete_derivative(ImportContext& context) {
   unary(context, "DiscreteDerivative", {{"gain", *gain_value}}, sampled, "DiscreteDerivative K " + *gain_value);
 }
 
+// A Selector with its indices in the dialog: each index a Constant and duet's Selector (which counts from 0), a Mux
+// of them where there are several.
+void selector(ImportContext& context) {
+  if (!context.require("NumberOfDimensions", "1", "duet selects from vectors") ||
+      !context.require("IndexOptions", "Index vector (dialog)", "the indices must be in the dialog"))
+    return;
+  const auto mode = context.raw("IndexMode");
+  const auto indices = context.value("Indices");
+  const auto u = context.input(1);
+  if (!mode || !indices || !u) return;
+  if (*mode != "One-based" && *mode != "Zero-based") {
+    context.refuse("IndexMode '" + *mode + "' is neither One-based nor Zero-based");
+    return;
+  }
+  if (indices->count() < 1 || indices->count() > 8) {
+    context.refuse("Indices '" + *context.raw("Indices") + "': duet selects one to eight elements");
+    return;
+  }
+  const double first = *mode == "One-based" ? 1 : 0;
+  std::vector<std::string> picked;
+  for (std::size_t k = 0; k < indices->count(); ++k) {
+    const bool alone = indices->count() == 1;
+    const std::string stem = context.block_name + (alone ? std::string{} : "_" + std::to_string(k + 1));
+    const std::string index = context.new_signal_name(stem + "_index");
+    context.emit({.name = context.new_block_name(stem + "_index"),
+                  .type = "Constant",
+                  .parameters = {{"value", yaml_number(indices->elements[k] - first)}},
+                  .outputs = {{"y", index}}},
+                 "");
+    const std::string out = alone ? context.output(1) : context.new_signal_name(stem);
+    context.emit({.name = alone ? context.block_name : context.new_block_name(stem),
+                  .type = "Selector",
+                  .inputs = {{"u", *u}, {"index", index}},
+                  .outputs = {{"y", out}}},
+                 "");
+    picked.push_back(out);
+  }
+  if (picked.size() > 1) {
+    TextPairs inputs;
+    for (std::size_t k = 0; k < picked.size(); ++k) inputs.emplace_back("u" + std::to_string(k + 1), picked[k]);
+    context.emit({.type = "Mux", .inputs = inputs, .outputs = {{"y", context.output(1)}}}, "");
+  }
+  context.emit_note("Selector of " + std::to_string(picked.size()) + " element(s), counted from 0");
+}
+
 }  // namespace
 
 BlockMapping mapping_for(const std::string& type) {
@@ -699,6 +744,7 @@ BlockMapping mapping_for(const std::string& type) {
       {"Math", math},
       {"Discrete Derivative", discrete_derivative},
       {"DiscreteFilter", discrete_filter},
+      {"Selector", selector},
   };
   const auto found = mappings.find(type);
   return found == mappings.end() ? nullptr : found->second;

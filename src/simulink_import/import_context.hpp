@@ -75,6 +75,8 @@ class ImportContext {
   // The duet block's name and source comment filled in from the Simulink block; a mapping may emit several.
   void emit(DuetBlock block, const std::string& what);
   void refuse(const std::string& reason);
+  // What the block became, for the report, where its blocks were emitted without saying.
+  void emit_note(const std::string& what) { what_ += (what_.empty() ? "" : "; ") + what; }
 
   [[nodiscard]] bool refused() const { return refused_; }
   [[nodiscard]] std::vector<DuetBlock>& emitted() { return emitted_; }
