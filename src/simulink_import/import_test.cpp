@@ -16,6 +16,7 @@
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/plant/plant.hpp"
+#include "duet/simulink_import/import_options.hpp"
 #include "duet/simulink_import/simulink_file.hpp"
 #include "duet/simulink_import/slx_model.hpp"
 #include "duet/support/text_file.hpp"
@@ -174,6 +175,25 @@ TEST(Import, TheOldestLayoutWithItsInlineDefaultsConfigurationAndMaskObject) {
   Ports plant{{{"inport:u", 1.0}}};
   ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0.006, .record_plant = false}));
   EXPECT_EQ(plant.history.at("outport:y"), (std::vector<double>{1, 1.5, 1.75, 1.875}));
+}
+
+// The balancing loop of the thesis' robot as a Simulink model (testing/tilt_controller_r2022b with its variables,
+// tilt_controller.m): a Kalman filter of Gain, Sum and UnitDelay blocks, a 10 ms outer loop behind rate transitions,
+// the discrete PID with clamping, the duty's limit, and a triggered subsystem counting falls. It imports and checks,
+// its variables tunable parameters of their names.
+TEST(Import, TheBalancingLoopImportsAndChecks) {
+  const auto model = read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx");
+  ASSERT_TRUE(model) << model.error();
+  auto variables = read_variable_files({(testing / "tilt_controller.m").string()});
+  ASSERT_TRUE(variables) << variables.error();
+  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  for (const char* tunable : {"  P: {value: 0.3", "  kalman_L: {value: [[2.0309889762471297e-05", "  stop_angle: "})
+    EXPECT_THAT(imported.model_text, HasSubstr(tunable));
+  EXPECT_EQ(verdict(imported, "tilt_controller/tilt PID").what, "DiscretePid (PID)");
+  EXPECT_THAT(imported.model_text, HasSubstr("period_us: 10000"));  // the outer loop
 }
 
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
