@@ -190,7 +190,7 @@ TEST(Import, TheBalancingLoopImportsAndChecks) {
   std::unique_ptr<model::Model> keep;
   const auto build = checked(imported, keep);
   ASSERT_TRUE(build);
-  for (const char* tunable : {"  P: {value: 0.3", "  kalman_L: {value: [[2.0309889762471297e-05", "  stop_angle: "})
+  for (const char* tunable : {"  P: {value: 0.3", "  kalman_L: {value: [[0.005728086339372147", "  stop_angle: "})
     EXPECT_THAT(imported.model_text, HasSubstr(tunable));
   EXPECT_EQ(verdict(imported, "tilt_controller/tilt PID").what, "DiscretePid (PID)");
   EXPECT_THAT(imported.model_text, HasSubstr("period_us: 10000"));  // the outer loop
