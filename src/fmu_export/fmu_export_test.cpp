@@ -10,6 +10,7 @@
 #include "duet/fmi/archive.hpp"
 #include "duet/fmi/imported_fmu.hpp"
 #include "duet/fmi/model_description_reader.hpp"
+#include "duet/fmu_export/fmu_interface.hpp"
 #include "duet/model/model_file.hpp"
 #include "duet/support/temporary_folder.hpp"
 #include "duet/support/text_file.hpp"
@@ -110,6 +111,17 @@ TEST(FmuExport, TheHeaterAsAnFmi2FmuUsesTwoPointZerosTypesAndPlatform) {
   EXPECT_EQ(temperature.type, fmi::VariableType::real);
   EXPECT_EQ(temperature.unit, "degC");
   EXPECT_THAT(description.units, ElementsAre("s", "degC"));
+}
+
+// A model's Inports and Outports on its own are resources of its own names: the FMU's inputs and outputs.
+TEST(FmuExport, AModelsInportsAndOutportsAreItsInputsAndOutputs) {
+  const Loaded loaded = load(DUET_SOURCE_DIR "/apps/tilt_reference/tilt_controller.yaml");
+  const fmi::ModelDescription description = fmu_interface(loaded.program, fmi::FmiVersion::v3).description;
+  EXPECT_EQ(variable(description, "inport:theta").causality, fmi::Causality::input);
+  EXPECT_EQ(variable(description, "inport:setpoint").causality, fmi::Causality::input);
+  EXPECT_THAT(variable(description, "inport:theta").description, HasSubstr("read by theta (Inport)"));
+  ASSERT_EQ(description.outputs.size(), 1U);
+  EXPECT_EQ(description.variables[description.outputs[0]].name, "outport:duty");
 }
 
 TEST(FmuExport, WithoutACompilerItSaysWhichItLookedFor) {

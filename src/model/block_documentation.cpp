@@ -131,6 +131,7 @@ constexpr ParameterDocumentation ipc_receive[] = {word("channel", "the applicati
 constexpr ParameterDocumentation plant_input[] = {word("resource", "the resource the controller writes (pwm:TIM1/3)"),
                                                   count("size", 1, "its elements (default 1)")};
 constexpr ParameterDocumentation plant_output[] = {word("resource", "the resource the controller reads")};
+constexpr ParameterDocumentation inport[] = {count("size", 1, "its elements (default 1)")};
 
 constexpr BlockDocumentation table[] = {
     {"Constant", "sources", "A value: a literal, a constant, or a tunable parameter read where it is used", constant},
@@ -177,7 +178,12 @@ constexpr BlockDocumentation table[] = {
     {"MatrixMultiply", "math", "a·b, row-major; a vector is a column", {}},
     {"EdgeDetect", "logic", "True in the step in which u changes as chosen", edge_detect},
     {"RateTransition", "rates", "Where two rates meet: hands a value from one task to another safely", rate_transition},
-    {"Outport", "structure", "Marks a signal as an output of the model", {}},
+    {"Inport", "structure",
+     "An input of the model: bound by a model reference, or read from the plant as inport:NAME on its own", inport},
+    {"Outport",
+     "structure",
+     "An output of the model: bound by a model reference, or written to the plant as outport:NAME on its own",
+     {}},
     {"GpioIn", "hardware", "A pin's level", gpio_in},
     {"GpioOut", "hardware", "Sets a pin's level", gpio_out},
     {"PwmOut", "hardware", "Sets a PWM channel's duty (0 to 1)", pwm_out},

@@ -82,6 +82,7 @@ const std::vector<BlockType> table{
     {"MatrixMultiply", {"a", "b"}, {"y"}, {}},
     {"EdgeDetect", {"u"}, {"y"}, {{"edge"}}, true},
     {"RateTransition", {"u"}, {"y"}, {{"mode", false}, {"initial", false}}, false},
+    {"Inport", {}, {"y"}, {{"size", false}}, false},
     {"Outport", {"u"}, {}, {}},
     // Hardware: each port implements them (docs/MODELS.md).
     {"GpioIn", {}, {"y"}, {{"pin"}}},
@@ -118,6 +119,10 @@ const BlockType* find_block_type(std::string_view name) {
   const auto found =
       std::find_if(table.begin(), table.end(), [name](const BlockType& type) { return type.name == name; });
   return found == table.end() ? nullptr : &*found;
+}
+
+bool is_plant_resource(std::string_view type) {
+  return type == "PlantInput" || type == "PlantOutput" || type == "Inport" || type == "Outport";
 }
 
 }  // namespace duet::model

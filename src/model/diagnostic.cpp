@@ -5,8 +5,9 @@
 namespace duet::model {
 
 std::string format(const std::string& file, const Diagnostic& diagnostic) {
+  const std::string& where = diagnostic.location.file.empty() ? file : diagnostic.location.file;
   std::string text =
-      file + ":" + std::to_string(diagnostic.location.line) + ":" + std::to_string(diagnostic.location.column) + ": " +
+      where + ":" + std::to_string(diagnostic.location.line) + ":" + std::to_string(diagnostic.location.column) + ": " +
       (diagnostic.severity == Diagnostic::Severity::error ? "error: " : "warning: ") + diagnostic.message;
   if (!diagnostic.hint.empty()) text += " (" + diagnostic.hint + ")";
   return text;

@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/model/task_set_file.hpp"
@@ -693,7 +694,7 @@ std::vector<Diagnostic> precision_warnings(const Program& program) {
     const auto is_double = [&program](std::size_t signal) {
       return program.signals[signal].type.type == DataType::float64;
     };
-    if (block.type() == "PlantInput" || block.type() == "PlantOutput") continue;  // simulation only
+    if (is_plant_resource(block.type())) continue;  // the plant's values, doubles by definition
     // A Constant that names a parameter is the parameter, named above; a block fed by a double follows it.
     const auto named_parameter = [&program](std::size_t signal) {
       return program.signals[signal].parameter.has_value();

@@ -7,6 +7,7 @@
 
 #include "block_semantics.hpp"
 #include "duet/blocks/convert.hpp"
+#include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
 #include "typed.hpp"
@@ -396,7 +397,7 @@ std::string Generator::update_phase(std::size_t index) const {
 std::string Generator::output_statements(const ProgramBlock& block) const {
   const std::string& type = block.type();
   if (block.block->code) return code_call(block);
-  if (type == "Outport" || block.outputs.empty()) return hardware_output(block);
+  if (block.outputs.empty()) return hardware_output(block);
   if (type == "RateTransition") return rate_transition_output(block);
   if (!hardware_resource(block).empty()) return hardware_output(block);
   const std::size_t y = block.outputs[0];
@@ -802,14 +803,14 @@ std::string Generator::code_call(const ProgramBlock& block) const {
 // which exist for simulation, go to the plant by name as doubles.
 std::string Generator::hardware_output(const ProgramBlock& block) const {
   const std::string& type = block.type();
-  if (type == "Outport" || hardware_resource(block).empty()) return {};  // or a block with its outputs unconnected
+  if (hardware_resource(block).empty()) return {};  // a block with its outputs unconnected
   if (type == "GpioOut") {
     return "  duet::hardware::gpio_write(" + block.identifier + "_pin, " + element(block.inputs[0], "0") + ");\n";
   }
   if (type == "GpioIn") {
     return "  " + element(block.outputs[0], "0") + " = duet::hardware::gpio_read(" + block.identifier + "_pin);\n";
   }
-  if (type == "PlantInput" || type == "PlantOutput") return plant_resource_access(block);
+  if (is_plant_resource(type)) return plant_resource_access(block);
   const std::string resource = "<" + block.identifier + "_resource>";
   if (type == "AdcStart") {
     const auto count = static_cast<long long>(block.argument("count")->value.elements.at(0));
@@ -861,7 +862,7 @@ std::string Generator::every_element(const std::vector<std::size_t>& signals, Da
   return text;
 }
 
-// PlantInput and PlantOutput: the plant's resource by name, values as doubles (the PC's port only).
+// PlantInput, PlantOutput, Inport and Outport: the plant's resource by name, values as doubles (the PC's port only).
 std::string Generator::plant_resource_access(const ProgramBlock& block) const {
   const std::string resource = "\"" + hardware_resource(block) + "\"";
   std::string text = "  {\n";

@@ -880,7 +880,6 @@ Compiled code_block(Compiler& c, const ProgramBlock& block, CodeFunction functio
 Compiled compile(Compiler& c, const ProgramBlock& block, const UserCodeLibrary* user_code, std::size_t index) {
   if (block.block->code) return code_block(c, block, user_code->function(index));
   const std::string& type = block.type();
-  if (type == "Outport") return {};
   // A block whose outputs the model leaves unconnected computes nothing, as in generated code.
   if (block.outputs.empty() && hardware_resource(block).empty()) return {};
   if (type == "RateTransition") return rate_transition(c, block);
@@ -928,6 +927,8 @@ std::string hardware_resource(const ProgramBlock& block) {
   if (type == "AdcDma" || type == "AdcStart") return "adc:" + text("adc") + "/" + text("channel");
   if (type == "IpcSend" || type == "IpcReceive") return "ipc:" + text("channel");
   if (type == "PlantInput" || type == "PlantOutput") return text("resource");
+  if (type == "Inport") return "inport:" + block.block->name;
+  if (type == "Outport") return "outport:" + block.block->name;
   return {};
 }
 

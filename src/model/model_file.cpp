@@ -15,6 +15,7 @@
 #include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/support/text_file.hpp"
+#include "model_reference.hpp"
 
 namespace duet::model {
 namespace {
@@ -362,7 +363,7 @@ Block block(const YAML::Node& node, double base_period_us) {
   const bool is_code = result.type == "Code";
   only(node, "block '" + result.name + "'",
        {"name", "type", "period", "period_us", "parameters", "inputs", "outputs", "blocks", "trigger", "enable",
-        "description", "function", "file", "state", "direct_feedthrough"});
+        "description", "function", "file", "state", "direct_feedthrough", "model"});
   if (!is_code) {
     for (const char* field : {"function", "file", "state", "direct_feedthrough"}) {
       if (node[field])
@@ -400,6 +401,15 @@ Block block(const YAML::Node& node, double base_period_us) {
   }
   result.inputs = connections(node["inputs"], "inputs", is_code);
   result.outputs = connections(node["outputs"], "outputs", is_code);
+  if (const YAML::Node model = node["model"]) {
+    if (result.type != "Subsystem") {
+      fail(model, "'model' belongs to Subsystem blocks", "block '" + result.name + "' is a " + result.type);
+    }
+    if (!model.IsScalar() || model.Scalar().empty()) fail(model, "'model' is the referenced model's file");
+    if (node["blocks"]) fail(node["blocks"], "a model reference takes its blocks from its file", "remove 'blocks'");
+    result.model = model.Scalar();
+    result.model_location = location_of(model);
+  }
   if (const YAML::Node blocks = node["blocks"]) {
     if (!blocks.IsSequence()) fail(blocks, "blocks must be a list");
     for (const auto& inner : blocks) result.blocks.push_back(block(inner, base_period_us));
@@ -519,23 +529,33 @@ Model model(const YAML::Node& root, const std::string& file) {
 
 }  // namespace
 
-Result<Model> parse_model(std::string_view text, const std::string& file) {
+Result<Model> parse_referenced_model(std::string_view text, const std::string& file,
+                                     const std::vector<std::string>& chain) {
+  Model read;
   try {
     const YAML::Node root = YAML::Load(std::string{text});
-    return model(root, file);
+    read = model(root, file);
   } catch (const Problem& problem) {
     return Failure{format(file, problem.diagnostic)};
   } catch (const YAML::Exception& error) {
     return Failure{format(
         file,
-        {Diagnostic::Severity::error, {error.mark.line + 1, error.mark.column + 1}, "not YAML: " + error.msg, ""})};
+        {Diagnostic::Severity::error, {error.mark.line + 1, error.mark.column + 1, {}}, "not YAML: " + error.msg, ""})};
   }
+  if (auto expanded = expand_references(read, chain); !expanded) return Failure{expanded.error()};
+  return read;
 }
 
-Result<Model> load_model(const std::string& path) {
+Result<Model> load_referenced_model(const std::string& path, const std::vector<std::string>& chain) {
   auto text = read_text_file(path);
   if (!text) return Failure{text.error()};
-  return parse_model(text.value(), path);
+  return parse_referenced_model(text.value(), path, chain);
 }
+
+Result<Model> parse_model(std::string_view text, const std::string& file) {
+  return parse_referenced_model(text, file, {});
+}
+
+Result<Model> load_model(const std::string& path) { return load_referenced_model(path, {}); }
 
 }  // namespace duet::model

@@ -112,7 +112,14 @@ const Malformed corpus[] = {
     {"block_unknown_field",
      "duet_model: 1\nname: a\nbase_period_us: 100\nblocks:\n  - {name: g, type: Gain, input: {u: x}}\n",
      "m.yaml:5:27: error: unknown field 'input' in block 'g' (known: name, type, period, period_us, parameters, "
-     "inputs, outputs, blocks, trigger, enable, description, function, file, state, direct_feedthrough)"},
+     "inputs, outputs, blocks, trigger, enable, description, function, file, state, direct_feedthrough, model)"},
+    {"model_on_a_gain",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nblocks:\n  - {name: g, type: Gain, model: c.yaml}\n",
+     "m.yaml:5:34: error: 'model' belongs to Subsystem blocks (block 'g' is a Gain)"},
+    {"model_and_blocks",
+     "duet_model: 1\nname: a\nbase_period_us: 100\nblocks:\n  - {name: s, type: Subsystem, model: c.yaml, blocks: "
+     "[]}\n",
+     "m.yaml:5:55: error: a model reference takes its blocks from its file (remove 'blocks')"},
     {"period_not_multiple",
      "duet_model: 1\nname: a\nbase_period_us: 100\nblocks:\n  - {name: g, type: Gain, period_us: 150}\n",
      "m.yaml:5:38: error: period_us 150 is not a whole multiple of the base period (base_period_us is 100)"},

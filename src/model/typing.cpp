@@ -152,7 +152,7 @@ KnownTypes infer_outputs(const Program& program, const ProgramBlock& block, cons
     if (outputs.size() > 1) outputs[1] = SignalType{DataType::boolean, {}};
   } else if (type == "SpiDma" || type == "IpcReceive") {
     y = SignalType{DataType::uint8, sized(size_argument(block, "size"))};
-  } else if (type == "PlantInput") {
+  } else if (type == "PlantInput" || type == "Inport") {
     y = SignalType{DataType::float64, sized(size_argument(block, "size"))};
   } else if (type == "AdcDma") {
     y = SignalType{DataType::uint16, sized(size_argument(block, "count"))};

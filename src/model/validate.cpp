@@ -46,7 +46,7 @@ class Validator {
   }
 
   std::vector<Diagnostic> run() {
-    check_scope(model_.blocks, {}, {}, Location{1, 1});
+    check_scope(model_.blocks, {}, {}, "");
     unused_warnings();
     return std::move(diagnostics_);
   }
@@ -71,10 +71,11 @@ class Validator {
     diagnostics_.push_back({Diagnostic::Severity::warning, location, std::move(message), std::move(hint)});
   }
 
-  // Checks the blocks of one scope; `inputs` are the signals its subsystem brings in, `outputs` those it must drive.
-  // Returns whether some output depends on some input within a step (the subsystem's direct feedthrough).
+  // Checks the blocks of one scope; `inputs` are the signals its subsystem brings in, `outputs` those it must drive;
+  // `prefix` is its path ("imu/"), with which its signals are declared. Returns whether some output depends on some
+  // input within a step (the subsystem's direct feedthrough).
   bool check_scope(const std::vector<Block>& blocks, const std::vector<Connection>& inputs,
-                   const std::vector<Connection>& outputs, Location where) {
+                   const std::vector<Connection>& outputs, const std::string& prefix) {
     std::map<std::string, Driver> drivers;
     std::vector<Reader> readers;
     std::map<std::string, bool> feedthrough;  // by block name
@@ -98,7 +99,7 @@ class Validator {
       if (block.code) check_code_file(block);
       if (!type->user_defined_ports) check_ports_and_parameters(block, *type);
       if (block.type == "Subsystem") {
-        const bool inner = check_scope(block.blocks, block.inputs, block.outputs, block.location);
+        const bool inner = check_scope(block.blocks, block.inputs, block.outputs, prefix + block.name + "/");
         feedthrough[block.name] = inner && block.trigger.kind == Trigger::Kind::none;
       }
       for (const auto& [name, parameter] : block.parameters) {
@@ -127,7 +128,7 @@ class Validator {
                 "signal '" + output.signal + "' has two drivers: " + found->second.what + " and " + driver.what,
                 "a signal has exactly one driver");
         }
-        driven_.insert(output.signal);
+        driven_.insert(prefix + output.signal);
       }
     }
     std::vector<std::string> driven_here;
@@ -147,7 +148,6 @@ class Validator {
     }
     if (block_names.size() == blocks.size())
       find_algebraic_loops(blocks, drivers, readers, feedthrough);  // names clear
-    (void)where;
     // Whether any of the subsystem's outputs depends on its inputs within a step.
     return depends_on_inputs(blocks, drivers, readers, feedthrough, inputs, outputs);
   }

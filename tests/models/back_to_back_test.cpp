@@ -26,6 +26,7 @@
 #include "pid_demo.hpp"
 #include "step_time.hpp"
 #include "thermostat.hpp"
+#include "tilt_reference.hpp"
 #include "transfer_test.hpp"
 
 namespace duet::model {
@@ -163,6 +164,11 @@ constexpr std::size_t dead_band = 12;
 namespace thermostat_parameter {
 constexpr std::size_t setpoint = 0;
 }  // namespace thermostat_parameter
+
+// tilt_reference's: the referenced controller's parameters, in its order.
+namespace tilt_reference_parameter {
+constexpr std::size_t Kp = 0;
+}  // namespace tilt_reference_parameter
 
 // block_tour's.
 namespace block_tour_parameter {
@@ -319,6 +325,20 @@ std::vector<Example> examples() {
         "error",
         "command",
         "position"}},
+      // A model reference: the PI controller of tilt_controller.yaml inside a model that closes its loop, its gain
+      // (the referenced model's parameter, now the model's) tuned at 400; its Inport and Outport are the plant's.
+      {"tilt_reference",
+       tilt_reference::description,
+       &tilt_reference::signals,
+       800,
+       [](std::uint64_t tick, Interpreter& model) {
+         if (tick == 400) model.set_parameter(tilt_reference_parameter::Kp, 0, 3);
+       },
+       [](std::uint64_t tick) {
+         if (tick == 400) tilt_reference::parameters.Kp = 3;
+       },
+       {},
+       {"tilt", "duty_command", "controller/integral"}},
   };
 }
 

@@ -6,8 +6,8 @@
 
 namespace duet::model {
 
-inline const std::vector<std::string> example_models{"step_time",  "transfer_test", "pid_demo",
-                                                     "thermostat", "balbot",        "block_tour"};
+inline const std::vector<std::string> example_models{"step_time", "transfer_test", "pid_demo",      "thermostat",
+                                                     "balbot",    "block_tour",    "tilt_reference"};
 
 inline std::string example_file(const std::string& model) {
   return std::string{DUET_SOURCE_DIR} + "/apps/" + model + "/" + model + ".yaml";

@@ -17,6 +17,7 @@
 #include "pid_demo_xcp.hpp"
 #include "step_time_xcp.hpp"
 #include "thermostat_xcp.hpp"
+#include "tilt_reference_xcp.hpp"
 #include "transfer_test_xcp.hpp"
 
 namespace duet::model {
@@ -50,6 +51,7 @@ std::unique_ptr<GeneratedSlave> generated_slave(const std::string& model) {
   if (model == "thermostat") return std::make_unique<SlaveOf<thermostat::xcp::Slave>>();
   if (model == "balbot") return std::make_unique<SlaveOf<balbot::xcp::Slave>>();
   if (model == "block_tour") return std::make_unique<SlaveOf<block_tour::xcp::Slave>>();
+  if (model == "tilt_reference") return std::make_unique<SlaveOf<tilt_reference::xcp::Slave>>();
   return nullptr;
 }
 

@@ -34,5 +34,8 @@ struct BlockType {
 // Parameters whose value is a word rather than a number or a reference: a pin, a timer, an operator, a data type.
 [[nodiscard]] bool is_word_parameter(std::string_view parameter);
 [[nodiscard]] const BlockType* find_block_type(std::string_view name);
+// Blocks that reach the plant by a resource's name, as doubles: a plant model's PlantInput and PlantOutput, and a
+// model's own Inport and Outport ("inport:NAME", "outport:NAME") when it runs on its own.
+[[nodiscard]] bool is_plant_resource(std::string_view type);
 
 }  // namespace duet::model

@@ -10,10 +10,12 @@
 
 namespace duet::model {
 
-// 1-based, as editors count.
+// 1-based, as editors count. `file`: the model file it is in when that is a referenced model's (a model reference
+// brings another file's blocks), empty for the model's own file.
 struct Location {
   int line = 0;
   int column = 0;
+  std::string file;
 };
 
 enum class DataType : std::uint8_t { float64, float32, int8, int16, int32, uint8, uint16, uint32, boolean };
@@ -113,7 +115,9 @@ struct Block {
   std::vector<std::pair<std::string, BlockParameter>> parameters;
   std::vector<Connection> inputs;
   std::vector<Connection> outputs;
-  std::vector<Block> blocks;  // a Subsystem's
+  std::vector<Block> blocks;  // a Subsystem's; a model reference's, from the referenced file
+  std::string model;          // a model reference: the referenced file, relative to the referencing one
+  Location model_location;
   Trigger trigger;
   std::string enable;            // a Subsystem's enabling signal
   std::optional<UserCode> code;  // a Code block's
