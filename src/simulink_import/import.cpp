@@ -198,7 +198,7 @@ class Importer final : public ImportModel {
   }
 
   // The blocks of one system. A subsystem's Inport and Outport blocks become its inputs and outputs; at the root
-  // they are the model's side of resources a plant answers (PlantInput "inport:NAME", PlantOutput "outport:NAME").
+  // they are the model's Inports and Outports: its interface.
   std::vector<DuetBlock> import_system(const System& system, const std::string& path, const Workspace& workspace,
                                        bool root, TextPairs* subsystem_inputs, TextPairs* subsystem_outputs) {
     Names signals;
@@ -429,8 +429,10 @@ class Importer final : public ImportModel {
                           .outputs = {{"y", outputs[0]}},
                           .source = block_path + " (Inport " + port + "): its type, " + declared->second});
       }
-      DuetBlock made{.name = names.unique(name), .type = inport ? "PlantInput" : "PlantOutput"};
-      made.parameters = {{"resource", yaml_string(std::string{inport ? "inport:" : "outport:"} + name)}};
+      // The model's interface: on its own the plant's resources inport:NAME and outport:NAME, referenced by another
+      // model (a Subsystem with model: FILE) bound to that model's signals.
+      const std::string unique = names.unique(name);
+      DuetBlock made{.name = unique, .type = inport ? "Inport" : "Outport"};
       if (inport)
         made.outputs = {{"y", read}};
       else
@@ -438,7 +440,9 @@ class Importer final : public ImportModel {
       made.source = block_path + " (" + block.type + " " + port + ")";
       blocks.push_back(std::move(made));
       verdict.imported = true;
-      verdict.what = std::string{inport ? "PlantInput inport:" : "PlantOutput outport:"} + name;
+      verdict.what =
+          std::string{inport ? "Inport (on its own the plant's inport:" : "Outport (on its own the plant's outport:"} +
+          unique + ")";
       result_.report.push_back(verdict);
       return;
     }

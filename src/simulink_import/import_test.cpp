@@ -5,8 +5,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -15,10 +17,12 @@
 #include "duet/model/model_file.hpp"
 #include "duet/model/program.hpp"
 #include "duet/model/simulation.hpp"
+#include "duet/plant/balbot/balbot_plant.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/simulink_import/import_options.hpp"
 #include "duet/simulink_import/simulink_file.hpp"
 #include "duet/simulink_import/slx_model.hpp"
+#include "duet/support/temporary_folder.hpp"
 #include "duet/support/text_file.hpp"
 #include "testing/package_folder.hpp"
 
@@ -80,7 +84,7 @@ TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   EXPECT_EQ(verdict(imported, "tilt_loop/Proportional\nGain").what, "Gain k: Kp");
   EXPECT_EQ(verdict(imported, "tilt_loop/Scale/times k").what, "Gain k: 2.5");  // the mask's value, a literal
   EXPECT_EQ(verdict(imported, "tilt_loop/error").what, "Sum +-");
-  EXPECT_EQ(verdict(imported, "tilt_loop/theta").what, "PlantInput inport:theta");
+  EXPECT_EQ(verdict(imported, "tilt_loop/theta").what, "Inport (on its own the plant's inport:theta)");
 
   auto parsed = model::parse_model(imported.model_text, "tilt_loop.yaml");
   ASSERT_TRUE(parsed) << parsed.error() << "\n" << imported.model_text;
@@ -194,6 +198,51 @@ TEST(Import, TheBalancingLoopImportsAndChecks) {
     EXPECT_THAT(imported.model_text, HasSubstr(tunable));
   EXPECT_EQ(verdict(imported, "tilt_controller/tilt PID").what, "DiscretePid (PID)");
   EXPECT_THAT(imported.model_text, HasSubstr("period_us: 10000"));  // the outer loop
+}
+
+// Issue #26's acceptance: the balancing loop imported from Simulink balances the simulated robot. The robot's model
+// (testing/balbot_harness.yaml: apps/balbot/balbot.yaml's sensors, safety stop, motor driver and encoders) references
+// the imported controller in place of its own loop; held at 5 degrees until 2 s, as apps/balbot's tests hold it.
+TEST(Import, TheImportedBalancingLoopBalancesTheSimulatedRobot) {
+  auto folder = TemporaryFolder::make("import_balancing_").value();
+  const auto model = read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx");
+  ASSERT_TRUE(model) << model.error();
+  auto variables = read_variable_files({(testing / "tilt_controller.m").string()});
+  ASSERT_TRUE(variables) << variables.error();
+  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  ASSERT_TRUE(imported.problems.empty()) << ::testing::PrintToString(imported.problems);
+  std::ofstream{folder.path() / "tilt_controller.yaml"} << imported.model_text;
+  std::filesystem::copy_file(testing / "balbot_harness.yaml", folder.path() / "balbot_harness.yaml");
+  std::filesystem::copy_file(std::filesystem::path{DUET_SOURCE_DIR} / "apps/balbot/every_second.hpp",
+                             folder.path() / "every_second.hpp");  // the robot's Code block
+  auto robot_model = model::load_model((folder.path() / "balbot_harness.yaml").string());
+  ASSERT_TRUE(robot_model) << robot_model.error();
+  const model::ProgramBuild build = model::build_program(robot_model.value());
+  for (const model::Diagnostic& diagnostic : build.diagnostics)
+    EXPECT_NE(diagnostic.severity, model::Diagnostic::Severity::error) << model::format("harness", diagnostic);
+  ASSERT_TRUE(build.program);
+  plant::BalbotScenario scenario;
+  scenario.initial_tilt_deg = 5;
+  scenario.release_time_s = 2;
+  const std::unique_ptr<plant::Plant> robot = plant::make_balbot_plant(scenario);
+  auto simulated = model::simulate(*build.program, *robot, {.duration_s = 12, .signals = {"stop"}});
+  ASSERT_TRUE(simulated) << simulated.error();
+  const model::Recording& recording = simulated.value().recording;
+  const auto column = [&recording](const std::string& name) {
+    const auto found = std::find(recording.names.begin(), recording.names.end(), name);
+    EXPECT_NE(found, recording.names.end()) << name;
+    return recording.columns[static_cast<std::size_t>(found - recording.names.begin())];
+  };
+  const std::vector<double> tilt = column("plant.theta_deg");
+  const std::vector<double> stopped = column("stop");
+  double largest_tilt = 0;
+  for (std::size_t row = 0; row < tilt.size(); ++row) {
+    if (recording.time_s[row] >= 4) largest_tilt = std::max(largest_tilt, std::abs(tilt[row]));
+    if (recording.time_s[row] >= 1.6) {
+      EXPECT_EQ(stopped[row], 0.0) << recording.time_s[row];  // never fell
+    }
+  }
+  EXPECT_LT(largest_tilt, 2.5);  // upright, 2 s after the release and on
 }
 
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
