@@ -70,7 +70,7 @@ TEST(ImportCommand, WithoutItsVariablesNothingIsWrittenAndEveryProblemIsSaid) {
   const Outcome no_gain =
       run({"import", "simulink", tilt_loop_slx(folder.path()).string(), "--base-period-us", "10000", "-o", output});
   EXPECT_EQ(no_gain.exit_code, ExitCode::failure);
-  EXPECT_THAT(no_gain.err, HasSubstr("duet import simulink: tilt_loop/Proportional Gain (Gain): 'Kp': column 1: "
+  EXPECT_THAT(no_gain.err, HasSubstr("duet import simulink: tilt_loop/Proportional Gain (Gain): Gain 'Kp': column 1: "
                                      "unresolved name 'Kp'\n"));
 }
 

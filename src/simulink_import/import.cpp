@@ -78,15 +78,16 @@ class Importer final : public ImportModel {
     return finish();
   }
 
-  std::optional<std::string> parameter_text(ImportContext& context, const std::string& expression) override {
+  std::optional<std::string> parameter_text(ImportContext& context, const std::string& parameter,
+                                            const std::string& expression) override {
     const std::string text = trimmed(expression);
     auto evaluated = evaluate(text, context.workspace());
     if (!evaluated) {
-      context.refuse("'" + text + "': " + evaluated.error());
+      context.refuse(parameter + " '" + text + "': " + evaluated.error());
       return std::nullopt;
     }
     if (evaluated.value().is_struct) {
-      context.refuse("'" + text + "' is a struct, not a number");
+      context.refuse(parameter + " '" + text + "' is a struct, not a number");
       return std::nullopt;
     }
     // A variable of the --variables files, not shadowed by a mask's: a model parameter of its name, tunable.

@@ -57,7 +57,7 @@ std::optional<double> ImportContext::scalar(const std::string& name) {
 std::optional<std::string> ImportContext::parameter(const std::string& name) {
   const auto text = raw(name);
   if (!text) return std::nullopt;
-  return model_.parameter_text(*this, *text);
+  return model_.parameter_text(*this, name, *text);
 }
 
 bool ImportContext::require(const std::string& name, const std::string& expected, const std::string& what) {

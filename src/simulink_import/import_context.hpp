@@ -28,7 +28,9 @@ class ImportModel {
   virtual ~ImportModel() = default;
   // A parameter's duet text: a model parameter's name when `expression` is a variable of the --variables files
   // (`Kp`, `P.pid.Kp` -> P_pid_Kp), which then stays tunable; else the value evaluated as a literal.
-  virtual std::optional<std::string> parameter_text(ImportContext& context, const std::string& expression) = 0;
+  // `parameter` names it in messages (Gain 'Kx': unresolved name 'Kx').
+  virtual std::optional<std::string> parameter_text(ImportContext& context, const std::string& parameter,
+                                                    const std::string& expression) = 0;
   [[nodiscard]] virtual long long base_period_us() const = 0;
   [[nodiscard]] virtual const SimulinkModel& source() const = 0;
 };

@@ -369,7 +369,7 @@ INSTANTIATE_TEST_SUITE_P(
                     "m/X (Gain): OutDataTypeStr 'single': duet's Gain computes in its input's type (convert with a "
                     "DataTypeConversion block)"},
         Unsupported{"unresolved", around(block_x("Gain", {{"Gain", "Kx"}})),
-                    "m/X (Gain): 'Kx': column 1: unresolved name 'Kx'"},
+                    "m/X (Gain): Gain 'Kx': column 1: unresolved name 'Kx'"},
         Unsupported{"continuous_time", around(block_x("UnitDelay", {{"SampleTime", "0"}})),
                     "m/X (UnitDelay): SampleTime '0' is continuous (0): duet imports discrete models only"},
         Unsupported{"offset", around(block_x("UnitDelay", {{"SampleTime", "[0.01 0.005]"}})),
