@@ -154,8 +154,15 @@ TEST(Import, EachBlockComputesWhatItsSimulinkBlockDoes) {
   EXPECT_EQ(steps("slope"), (Steps{20, 0, 0, 0, 0}));             // (u(k) - u(k-1)) / 0.1 from a previous 0
   EXPECT_EQ(steps("filtered"), (Steps{2, 3, 3.5, 3.75, 3.875}));  // 1 / (1 - 0.5 z^-1): y(k) = 0.5 y(k-1) + u(k)
   EXPECT_EQ(steps("matrix"), Steps(5, 8.0));
-  EXPECT_EQ(steps("picked"), Steps(5, 3.0));  // [u c]([2 1]) = [c u]: its first element, c                      // [1
-                                              // 2; 3 4] * [u; c], the first element
+  EXPECT_EQ(steps("picked"), Steps(5, 3.0));    // [u c]([2 1]) = [c u]: its first element, c
+  EXPECT_EQ(steps("both"), Steps(5, 0.0));      // less NAND less: not (true and true)
+  const Steps limited = steps("limited_ramp");  // the ramp's state held within [-0.3, 0.3]
+  ASSERT_EQ(limited.size(), 5U);
+  EXPECT_NEAR(limited[1], 0.2, 1e-12);
+  EXPECT_EQ(limited[2], 0.3);
+  EXPECT_EQ(limited[4], 0.3);
+  EXPECT_EQ(plant.history.at("outport:y_held"), Steps(3, 2.0));  // at 0.2 s: steps 0, 2 and 4 of 0.1 s //
+                                                                 // [1 2; 3 4] * [u; c], the first element
   EXPECT_EQ(verdict(imported, "signal_chain/late").what, "3 UnitDelays in a row");
   EXPECT_EQ(verdict(imported, "signal_chain/end").what, "nothing to bring over");
 }
