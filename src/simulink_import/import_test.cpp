@@ -252,6 +252,24 @@ TEST(Import, TheImportedBalancingLoopBalancesTheSimulatedRobot) {
   EXPECT_LT(largest_tilt, 2.5);  // upright, 2 s after the release and on
 }
 
+// A packaged text .mdl (R2025b) through the import: its model names no solver, so the base period is given.
+TEST(Import, APackagedTextMdlWithTheBasePeriodGiven) {
+  auto model = read_simulink_file(testing / "packaged_r2025b.mdl");
+  ASSERT_TRUE(model) << model.error();
+  const ImportResult without = import_simulink(model.value(), {});
+  ASSERT_EQ(without.problems.size(), 1U);
+  EXPECT_EQ(without.problems[0],
+            "velo_pi: the fixed step is 'not in the file'; give the base period with "
+            "--base-period-us");
+  const ImportResult imported = import_simulink(model.value(), {.base_period_us = 5000});
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  Ports plant{{{"inport:speed", 2.5}}};
+  ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0.01, .record_plant = false}));
+  EXPECT_EQ(plant.history.at("outport:voltage"), (std::vector<double>{2.0, 2.0, 2.0}));  // 0.8 speed, every 5 ms
+}
+
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
 // triggered on the clock's rising edges (its count advancing only then), and a function-call subsystem that
 // --interrupt makes an interrupt task, fed and read through rate transitions; the interrupt block that called it in
