@@ -54,6 +54,10 @@ TEST(ImportCommand, AModelWithItsVariablesIsWrittenCheckedAndReported) {
   const Outcome gen = run({"gen", output, "-o", generated});
   ASSERT_EQ(gen.exit_code, ExitCode::success) << gen.err;
   EXPECT_THAT(read_text_file(generated + "/tilt_loop.a2l").value(), HasSubstr("/begin CHARACTERISTIC Kp "));
+  // And it renders as a diagram.
+  const Outcome rendered = run({"model", "render", output, "-o", (folder.path() / "tilt_loop.svg").string()});
+  EXPECT_EQ(rendered.exit_code, ExitCode::success) << rendered.err;
+  EXPECT_THAT(read_text_file((folder.path() / "tilt_loop.svg").string()).value(), HasSubstr("<svg"));
 }
 
 TEST(ImportCommand, WithoutItsVariablesNothingIsWrittenAndEveryProblemIsSaid) {
