@@ -48,15 +48,27 @@ void unary(ImportContext& context, const std::string& type, TextPairs parameters
                what);
 }
 
+// A count of ports, a whole number from 1 to `most`; refuses anything else (a huge, negative or fractional value
+// would be no count of ports at all).
+std::optional<std::size_t> port_count(ImportContext& context, const std::string& name, std::size_t most) {
+  const auto value = context.scalar(name);
+  if (!value) return std::nullopt;
+  if (!(*value >= 1 && *value <= static_cast<double>(most) && *value == std::floor(*value))) {
+    context.refuse(name + " '" + *context.raw(name) + "' is not a whole number from 1 to " + std::to_string(most));
+    return std::nullopt;
+  }
+  return static_cast<std::size_t>(*value);
+}
+
 // The signs of a Sum ("|+-", "++" or a count) or a Product ("*/" or a count), `|` being only the icon's spacing.
 std::optional<std::string> signs(ImportContext& context, char sign_of_count) {
   const auto text = context.raw("Inputs");
   if (!text) return std::nullopt;
   std::string signs;
   if (!text->empty() && (*text)[0] >= '0' && (*text)[0] <= '9') {
-    const auto count = context.scalar("Inputs");
+    const auto count = port_count(context, "Inputs", 64);
     if (!count) return std::nullopt;
-    signs.assign(static_cast<std::size_t>(*count), sign_of_count);
+    signs.assign(*count, sign_of_count);
   } else {
     for (const char c : *text)
       if (c != '|') signs += c;
@@ -253,9 +265,9 @@ void logic(ImportContext& context) {
     context.refuse("Operator " + *operation + " is not one of duet's Logic (AND, OR, XOR, NAND, NOR, NOT)");
     return;
   }
-  const auto count = context.scalar("Inputs");
+  const auto count = port_count(context, "Inputs", 64);
   if (!count) return;
-  const auto inputs = numbered_inputs(context, static_cast<std::size_t>(*count));
+  const auto inputs = numbered_inputs(context, *count);
   if (!inputs) return;
   context.emit({.type = "Logic",
                 .parameters = {{"operator", *operation}},
@@ -267,13 +279,13 @@ void logic(ImportContext& context) {
 void min_max(ImportContext& context) {
   if (!inherits_type(context)) return;
   const auto function = context.raw("Function");
-  const auto count = context.scalar("Inputs");
+  const auto count = port_count(context, "Inputs", 64);
   if (!function || !count) return;
   if (*count < 2) {
     context.refuse("one input takes the extreme of its elements, which duet's MinMax does not");
     return;
   }
-  const auto inputs = numbered_inputs(context, static_cast<std::size_t>(*count));
+  const auto inputs = numbered_inputs(context, *count);
   if (!inputs) return;
   context.emit({.type = "MinMax",
                 .parameters = {{"function", *function}},
@@ -379,24 +391,19 @@ void data_type_conversion(ImportContext& context) {
 }
 
 void mux(ImportContext& context) {
-  const auto count = context.scalar("Inputs");
+  const auto count = port_count(context, "Inputs", 64);
   if (!count) return;
-  const auto inputs = numbered_inputs(context, static_cast<std::size_t>(*count));
+  const auto inputs = numbered_inputs(context, *count);
   if (!inputs) return;
   context.emit({.type = "Mux", .inputs = *inputs, .outputs = {{"y", context.output(1)}}}, "Mux");
 }
 
 void demux(ImportContext& context) {
-  const auto count = context.scalar("Outputs");
+  const auto count = port_count(context, "Outputs", 8);  // duet's Demux: one to eight outputs, an element each
   const auto u = context.input(1);
   if (!count || !u) return;
-  if (*count < 1 || *count > 8) {
-    context.refuse("Outputs " + std::to_string(static_cast<long long>(*count)) +
-                   ": duet's Demux has one to eight outputs, one element each");
-    return;
-  }
   TextPairs outputs;
-  for (std::size_t port = 1; port <= static_cast<std::size_t>(*count); ++port)
+  for (std::size_t port = 1; port <= *count; ++port)
     outputs.emplace_back("y" + std::to_string(port), context.output(port));
   context.emit({.type = "Demux", .inputs = {{"u", *u}}, .outputs = outputs}, "Demux, an element per output");
 }

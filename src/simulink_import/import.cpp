@@ -1,6 +1,7 @@
 #include "duet/simulink_import/import.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <functional>
 #include <set>
@@ -449,7 +450,13 @@ class Importer final : public ImportModel {
     }
     // Inside a subsystem: the port's place in the subsystem's inputs or outputs, by its number.
     TextPairs& ports = inport ? *subsystem_inputs : *subsystem_outputs;
-    const std::size_t index = static_cast<std::size_t>(std::max(1, std::atoi(port.c_str())));
+    std::size_t index = 0;
+    const auto [end, error] = std::from_chars(port.data(), port.data() + port.size(), index);
+    if (error != std::errc{} || end != port.data() + port.size() || index < 1 || index > 1000) {
+      verdict.what = "its Port '" + port + "' is not a port number from 1 to 1000";
+      refuse(verdict);
+      return;
+    }
     if (ports.size() < index) ports.resize(index);
     ports[index - 1].first = inport ? outputs[0] : inputs[0];
     verdict.imported = true;

@@ -408,6 +408,8 @@ INSTANTIATE_TEST_SUITE_P(
         Unsupported{"one_input_sum", around(block_x("Sum", {{"Inputs", "+"}})),
                     "m/X (Sum): one input (Inputs '+') combines its elements, which duet's Sum does not: use two "
                     "inputs or a Mux"},
+        Unsupported{"huge_count", around(block_x("Sum", {{"Inputs", "2e26"}})),
+                    "m/X (Sum): Inputs '2e26' is not a whole number from 1 to 64"},
         Unsupported{"commented", around(block_x("Gain", {{"Commented", "on"}})),
                     "m/X (Gain): commented out (on): refused, uncomment or delete it"},
         Unsupported{"nxor", around(block_x("Logic", {{"Operator", "NXOR"}})),
