@@ -59,12 +59,6 @@ bool is_variable_path(std::string_view text) {
   return !at_start;
 }
 
-std::string trimmed(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(" \t\n");
-  if (first == std::string::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\n") - first + 1);
-}
-
 class Importer final : public ImportModel {
  public:
   Importer(const SimulinkModel& model, const ImportOptions& options) : model_(model), options_(options) {}
@@ -211,15 +205,14 @@ class Importer final : public ImportModel {
     for (const Block& block : system.blocks) {
       if (block.type != "Goto") continue;
       const auto fed = wiring.fed.find({block.name, "in", 1});
-      if (fed != wiring.fed.end())
-        goto_sources[trimmed(block.parameters.count("GotoTag") ? block.parameters.at("GotoTag") : "A")] = fed->second;
+      if (fed != wiring.fed.end()) goto_sources[stored_or(block, "GotoTag", "A")] = fed->second;
     }
     const auto signal_of = [&](std::pair<std::string, int> source) -> std::string {
       for (int hops = 0; hops < 100; ++hops) {
         const auto block = std::find_if(system.blocks.begin(), system.blocks.end(),
                                         [&](const Block& each) { return each.name == source.first; });
         if (block == system.blocks.end() || block->type != "From") break;
-        const std::string tag = trimmed(block->parameters.count("GotoTag") ? block->parameters.at("GotoTag") : "A");
+        const std::string tag = stored_or(*block, "GotoTag", "A");
         const auto found = goto_sources.find(tag);
         if (found == goto_sources.end()) return {};
         source = found->second;
@@ -383,7 +376,7 @@ class Importer final : public ImportModel {
                   const std::vector<std::string>& outputs, TextPairs* subsystem_inputs, TextPairs* subsystem_outputs,
                   std::vector<DuetBlock>& blocks, Names& names, Names& signals, Verdict& verdict) {
     const bool inport = block.type == "Inport";
-    const std::string port = block.parameters.count("Port") ? trimmed(block.parameters.at("Port")) : "1";
+    const std::string port = stored_or(block, "Port", "1");
     const std::string name = identifier(block.name);
     if (inport && outputs.empty()) {
       verdict.imported = true;
@@ -398,8 +391,7 @@ class Importer final : public ImportModel {
     }
     if (!inport && !root) {
       const auto setting = [&block](const char* parameter, const char* otherwise) {
-        const auto found = block.parameters.find(parameter);
-        return found == block.parameters.end() ? std::string{otherwise} : trimmed(found->second);
+        return stored_or(block, parameter, otherwise);
       };
       if (setting("OutputWhenDisabled", "held") != "held" || setting("InitialOutput", "[]") != "[]") {
         verdict.what =
@@ -529,9 +521,8 @@ class Importer final : public ImportModel {
   bool trigger_and_enable(const Block& block, const std::string& block_path, const std::vector<std::string>& enables,
                           const std::vector<std::string>& triggers, DuetBlock& made, Verdict& verdict) {
     for (const Block& inside : block.systems[0].blocks) {
-      const auto setting = [&](const char* name, const char* otherwise) {
-        const auto found = inside.parameters.find(name);
-        return found == inside.parameters.end() ? std::string{otherwise} : trimmed(found->second);
+      const auto setting = [&inside](const char* name, const char* otherwise) {
+        return stored_or(inside, name, otherwise);
       };
       if (inside.type == "EnablePort") {
         if (setting("StatesWhenEnabling", "held") != "held" || setting("ShowOutputPort", "off") != "off") {

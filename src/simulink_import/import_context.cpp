@@ -5,15 +5,16 @@
 #include "duet/simulink_import/builtin_defaults.hpp"
 
 namespace duet::simulink_import {
-namespace {
-
 std::string trimmed(const std::string& text) {
   const std::size_t first = text.find_first_not_of(" \t\n");
   if (first == std::string::npos) return {};
   return text.substr(first, text.find_last_not_of(" \t\n") - first + 1);
 }
 
-}  // namespace
+std::string stored_or(const Block& block, const char* name, const char* otherwise) {
+  const auto found = block.parameters.find(name);
+  return found == block.parameters.end() ? std::string{otherwise} : trimmed(found->second);
+}
 
 std::optional<std::string> ImportContext::raw(const std::string& name) {
   if (const auto masked = block_.mask_parameters.find(name); masked != block_.mask_parameters.end())

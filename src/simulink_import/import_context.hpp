@@ -16,6 +16,11 @@ namespace duet::simulink_import {
 
 class ImportContext;
 
+// `text` without the spaces, tabs and newlines around it.
+[[nodiscard]] std::string trimmed(const std::string& text);
+// A block's parameter as stored, trimmed, or `otherwise` where the block does not store it.
+[[nodiscard]] std::string stored_or(const Block& block, const char* name, const char* otherwise);
+
 // Turns `context.block()` into duet blocks (context.emit) or refuses it (context.refuse).
 using BlockMapping = void (*)(ImportContext& context);
 
