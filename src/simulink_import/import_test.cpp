@@ -24,6 +24,7 @@
 #include "duet/simulink_import/slx_model.hpp"
 #include "duet/support/temporary_folder.hpp"
 #include "duet/support/text_file.hpp"
+#include "testing/import_harness.hpp"
 #include "testing/package_folder.hpp"
 
 namespace duet::simulink_import {
@@ -32,45 +33,6 @@ namespace {
 using ::testing::HasSubstr;
 
 const std::filesystem::path testing = DUET_SIMULINK_TESTING_DIR;
-
-// A plant that answers the imported model's root inports (fixed values, or by the step) and keeps what its outports
-// write; it may raise an interrupt in chosen steps.
-class Ports : public plant::Plant {
- public:
-  using Inport = std::function<double(std::size_t step)>;
-  explicit Ports(const std::map<std::string, double>& inports) {
-    for (const auto& [name, value] : inports) inports_[name] = [value](std::size_t) { return value; };
-  }
-  explicit Ports(std::map<std::string, Inport> inports) : inports_(std::move(inports)) {}
-  void advance(double time_s, const plant::RaiseInterrupt& raise) override {
-    step_ = static_cast<std::size_t>(std::llround(time_s / period_s));
-    if (interrupt_steps.count(step_) != 0) raise(interrupt);
-  }
-  void write(std::string_view resource, std::span<const double> values) override {
-    written[std::string{resource}] = values[0];
-    history[std::string{resource}].push_back(values[0]);
-  }
-  void read(std::string_view resource, std::span<double> values) override {
-    values[0] = inports_.at(std::string{resource})(step_);
-  }
-  std::map<std::string, double> written;               // the last value each outport wrote
-  std::map<std::string, std::vector<double>> history;  // every value, a step after a step
-  double period_s = 0.01;
-  std::string interrupt;
-  std::set<std::size_t> interrupt_steps;
-
- private:
-  std::map<std::string, Inport> inports_;
-  std::size_t step_ = 0;
-};
-
-const Verdict& verdict(const ImportResult& result, const std::string& path) {
-  for (const Verdict& each : result.report)
-    if (each.path == path) return each;
-  ADD_FAILURE() << "no verdict for " << path;
-  static const Verdict none;
-  return none;
-}
 
 TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   const SimulinkModel model = read_slx_model(parts_of(testing / "slx_r2019b"), "tilt_loop.slx").value();
@@ -99,20 +61,6 @@ TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   ASSERT_TRUE(simulated) << simulated.error();
   EXPECT_EQ(plant.written.at("outport:duty"), 10.0);
   EXPECT_EQ(plant.written.at("outport:previous"), 4.0);
-}
-
-// The imported model as duet checks it, or the test fails with the diagnostics and the text.
-std::optional<model::ProgramBuild> checked(const ImportResult& imported, std::unique_ptr<model::Model>& keep) {
-  EXPECT_TRUE(imported.problems.empty()) << ::testing::PrintToString(imported.problems);
-  auto parsed = model::parse_model(imported.model_text, "imported.yaml");
-  EXPECT_TRUE(parsed) << (parsed ? "" : parsed.error()) << "\n" << imported.model_text;
-  if (!parsed) return std::nullopt;
-  keep = std::make_unique<model::Model>(std::move(parsed).value());
-  model::ProgramBuild build = model::build_program(*keep);
-  for (const model::Diagnostic& diagnostic : build.diagnostics)
-    ADD_FAILURE() << model::format("imported.yaml", diagnostic) << "\n" << imported.model_text;
-  if (!build.program) return std::nullopt;
-  return build;
 }
 
 // Every block of the R2021a test model on a constant input u = 2, each value as Simulink's block computes it.
