@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -40,6 +41,30 @@ class Names {
  private:
   std::set<std::string> used_;
 };
+
+// What drives a subsystem's trigger port: the signal, and the block whose output it is (none through a subsystem's
+// port), in the root system or not.
+struct Trigger {
+  std::vector<std::string> signals;
+  const Block* driver = nullptr;
+  bool in_root = false;
+};
+
+// Whether `driver`'s output is never below zero: a boolean or an unsigned integer. For such a signal Simulink's
+// triggering edges (a rise from below zero to zero or above, or from zero to above; falls likewise) are duet's
+// (from zero or below to above zero; from above zero to zero or below).
+bool never_negative(const Block& driver, bool in_root) {
+  static const std::set<std::string, std::less<>> comparisons{"RelationalOperator", "Logic"};
+  static const std::set<std::string, std::less<>> compare_links{"Compare To Constant", "Compare To Zero"};
+  static const std::set<std::string, std::less<>> unsigned_types{"boolean", "uint8", "uint16", "uint32"};
+  if (comparisons.count(driver.type) != 0) return true;
+  const auto source_type = driver.parameters.find("SourceType");
+  if (driver.type == "Reference" && source_type != driver.parameters.end())
+    return compare_links.count(source_type->second) != 0;
+  const bool typed = driver.type == "DataTypeConversion" || (driver.type == "Inport" && in_root);
+  const auto type = driver.parameters.find("OutDataTypeStr");
+  return typed && type != driver.parameters.end() && unsigned_types.count(type->second) != 0;
+}
 
 bool is_variable_path(std::string_view text) {
   if (text.empty()) return false;
@@ -207,18 +232,32 @@ class Importer final : public ImportModel {
       const auto fed = wiring.fed.find({block.name, "in", 1});
       if (fed != wiring.fed.end()) goto_sources[stored_or(block, "GotoTag", "A")] = fed->second;
     }
-    const auto signal_of = [&](std::pair<std::string, int> source) -> std::string {
+    const auto named = [&system](const std::string& name) -> const Block* {
+      const auto block = std::find_if(system.blocks.begin(), system.blocks.end(),
+                                      [&](const Block& each) { return each.name == name; });
+      return block == system.blocks.end() ? nullptr : &*block;
+    };
+    // The block output that drives `source`, through From blocks to what their Goto is fed with.
+    const auto driver_of = [&](std::pair<std::string, int> source) -> std::optional<std::pair<std::string, int>> {
       for (int hops = 0; hops < 100; ++hops) {
-        const auto block = std::find_if(system.blocks.begin(), system.blocks.end(),
-                                        [&](const Block& each) { return each.name == source.first; });
-        if (block == system.blocks.end() || block->type != "From") break;
-        const std::string tag = stored_or(*block, "GotoTag", "A");
-        const auto found = goto_sources.find(tag);
-        if (found == goto_sources.end()) return {};
+        const Block* block = named(source.first);
+        if (block == nullptr || block->type != "From") break;
+        const auto found = goto_sources.find(stored_or(*block, "GotoTag", "A"));
+        if (found == goto_sources.end()) return std::nullopt;
         source = found->second;
       }
-      const auto driven = wiring.driven.find(source);
+      return source;
+    };
+    const auto signal_of = [&](std::pair<std::string, int> source) -> std::string {
+      const auto driver = driver_of(source);
+      const auto driven = driver ? wiring.driven.find(*driver) : wiring.driven.end();
       return driven == wiring.driven.end() ? std::string{} : driven->second;
+    };
+    const auto trigger_driver = [&](const Block& subsystem) -> const Block* {
+      const auto fed = wiring.fed.find({subsystem.name, "trigger", 1});
+      if (fed == wiring.fed.end()) return nullptr;
+      const auto driver = driver_of(fed->second);
+      return driver ? named(driver->first) : nullptr;
     };
     const auto input_signals = [&](const Block& block, const std::string& kind) {
       std::vector<std::string> inputs;
@@ -285,7 +324,7 @@ class Importer final : public ImportModel {
       }
       if (block.type == "SubSystem") {
         subsystem(block, block_path, workspace, inputs, outputs, input_signals(block, "enable"),
-                  input_signals(block, "trigger"), blocks, names, signals, verdict);
+                  {input_signals(block, "trigger"), trigger_driver(block), root}, blocks, names, signals, verdict);
         continue;
       }
       const std::string type = block.type == "Reference" && block.parameters.count("SourceType") != 0
@@ -458,8 +497,8 @@ class Importer final : public ImportModel {
 
   void subsystem(const Block& block, const std::string& block_path, const Workspace& outer,
                  const std::vector<std::string>& inputs, const std::vector<std::string>& outputs,
-                 const std::vector<std::string>& enables, const std::vector<std::string>& triggers,
-                 std::vector<DuetBlock>& blocks, Names& names, Names& signals, Verdict& verdict) {
+                 const std::vector<std::string>& enables, const Trigger& trigger, std::vector<DuetBlock>& blocks,
+                 Names& names, Names& signals, Verdict& verdict) {
     const std::string kind = block.parameters.count("SFBlockType") ? block.parameters.at("SFBlockType") : "NONE";
     if (kind != "NONE") {
       verdict.what = "a " + kind + " block: its code is MATLAB or Stateflow, which duet does not translate";
@@ -499,7 +538,7 @@ class Importer final : public ImportModel {
       if (port < outputs.size() && !outputs[port].empty() && !inner_outputs[port].first.empty())
         made.outputs.emplace_back(inner_outputs[port].first, outputs[port]);
     }
-    if (!trigger_and_enable(block, block_path, enables, triggers, made, verdict)) return;
+    if (!trigger_and_enable(block, block_path, enables, trigger, made, verdict)) return;
     if (!made.enable.empty()) {
       // Simulink enables a subsystem while its enable signal is positive; duet's enable is one boolean.
       const std::string enabled = signals.unique(made.name + "_enabled");
@@ -519,7 +558,7 @@ class Importer final : public ImportModel {
   }
 
   bool trigger_and_enable(const Block& block, const std::string& block_path, const std::vector<std::string>& enables,
-                          const std::vector<std::string>& triggers, DuetBlock& made, Verdict& verdict) {
+                          const Trigger& trigger, DuetBlock& made, Verdict& verdict) {
     for (const Block& inside : block.systems[0].blocks) {
       const auto setting = [&inside](const char* name, const char* otherwise) {
         return stored_or(inside, name, otherwise);
@@ -558,12 +597,23 @@ class Importer final : public ImportModel {
           refuse(verdict);
           return false;
         }
-        if (triggers.empty() || triggers[0].empty()) {
+        if (trigger.signals.empty() || trigger.signals[0].empty()) {
           verdict.what = "its trigger port is not connected";
           refuse(verdict);
           return false;
         }
-        made.trigger = "{edge: " + type + ", signal: " + triggers[0] + "}";
+        if (trigger.driver == nullptr || !never_negative(*trigger.driver, trigger.in_root)) {
+          verdict.what =
+              "its trigger signal " + trigger.signals[0] +
+              (trigger.driver == nullptr ? std::string{}
+                                         : " (from " + trigger.driver->name + ", " + trigger.driver->type + ")") +
+              " may be negative, and then Simulink's edges and duet's differ (Simulink also triggers on a rise "
+              "from below zero to exactly zero); trigger with a boolean or unsigned signal (a Compare To Zero, a "
+              "Relational Operator, an Inport of type boolean) so that both agree";
+          refuse(verdict);
+          return false;
+        }
+        made.trigger = "{edge: " + type + ", signal: " + trigger.signals[0] + "}";
       }
     }
     return true;

@@ -219,9 +219,9 @@ TEST(Import, APackagedTextMdlWithTheBasePeriodGiven) {
 }
 
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
-// triggered on the clock's rising edges (its count advancing only then), and a function-call subsystem that
-// --interrupt makes an interrupt task, fed and read through rate transitions; the interrupt block that called it in
-// Simulink is not needed.
+// triggered on the rising edges of the clock, a boolean inport (its count advancing only then), and a function-call
+// subsystem that --interrupt makes an interrupt task, fed and read through rate transitions; the interrupt block that
+// called it in Simulink is not needed.
 TEST(Import, EnabledTriggeredAndFunctionCallSubsystems) {
   auto model = read_simulink_file(testing / "subsystems.mdl");
   ASSERT_TRUE(model) << model.error();
@@ -294,6 +294,13 @@ Block subsystem_x(Block port_block, std::map<std::string, std::string> parameter
   Block x = block_x("SubSystem", std::move(parameters));
   x.systems.push_back(std::move(inside));
   return x;
+}
+
+// around(x) with u driving x's trigger port too.
+SimulinkModel triggered_by_u(Block x) {
+  SimulinkModel model = around(std::move(x));
+  model.root.lines[0].destinations.push_back({"X", "trigger", 1});
+  return model;
 }
 
 struct Unsupported {
@@ -392,6 +399,15 @@ INSTANTIATE_TEST_SUITE_P(
         Unsupported{"trigger_compatibility", around(subsystem_x({.type = "TriggerPort", .name = "t", .sid = "6"})),
                     "m/X (SubSystem): its trigger's InitialTriggerSignalState is not 'zero': duet's edge detection "
                     "starts from zero (set it to zero in Simulink)"},
+        Unsupported{"trigger_of_doubles",
+                    triggered_by_u(subsystem_x({.type = "TriggerPort",
+                                                .name = "t",
+                                                .sid = "6",
+                                                .parameters = {{"InitialTriggerSignalState", "zero"}}})),
+                    "m/X (SubSystem): its trigger signal u (from u, Inport) may be negative, and then Simulink's "
+                    "edges and duet's differ (Simulink also triggers on a rise from below zero to exactly zero); "
+                    "trigger with a boolean or unsigned signal (a Compare To Zero, a Relational Operator, an Inport "
+                    "of type boolean) so that both agree"},
         Unsupported{
             "enable_reset",
             around(subsystem_x(
