@@ -103,7 +103,13 @@ void constant(ImportContext& context) {
 void gain(ImportContext& context) {
   if (!inherits_type(context)) return;
   const auto multiplication = context.raw("Multiplication");
-  if (!multiplication) return;
+  const auto gain_type = context.raw("ParamDataTypeStr");
+  if (!multiplication || !gain_type) return;
+  // A gain of its own type (single, say) is rounded to it before it multiplies; duet's k has the block's type.
+  if (!gain_type->starts_with("Inherit:")) {
+    context.refuse("ParamDataTypeStr '" + *gain_type + "': duet's Gain keeps k in its input's type");
+    return;
+  }
   if (*multiplication == "Matrix(K*u)" || *multiplication == "Matrix(K*u) (u vector)") {
     // K times the input taken as a column: a Constant K and a MatrixMultiply.
     const auto k = context.parameter("Gain");

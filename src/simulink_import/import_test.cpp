@@ -336,6 +336,8 @@ INSTANTIATE_TEST_SUITE_P(
                     "has)"},
         Unsupported{"matrix_gain", around(block_x("Gain", {{"Multiplication", "Matrix(u*K)"}})),
                     "m/X (Gain): Multiplication 'Matrix(u*K)': duet multiplies element-wise or K*u (Matrix(K*u))"},
+        Unsupported{"gain_type", around(block_x("Gain", {{"ParamDataTypeStr", "single"}})),
+                    "m/X (Gain): ParamDataTypeStr 'single': duet's Gain keeps k in its input's type"},
         Unsupported{"sine", around(block_x("Trigonometry")),
                     "m/X (Trigonometry): Operator sin: of the trigonometric functions duet has atan2"},
         Unsupported{"output_type", around(block_x("Gain", {{"OutDataTypeStr", "single"}})),
