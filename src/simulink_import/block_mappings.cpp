@@ -103,7 +103,13 @@ void constant(ImportContext& context) {
 void gain(ImportContext& context) {
   if (!inherits_type(context)) return;
   const auto multiplication = context.raw("Multiplication");
-  if (!multiplication) return;
+  const auto gain_type = context.raw("ParamDataTypeStr");
+  if (!multiplication || !gain_type) return;
+  // A gain of its own type (single, say) is rounded to it before it multiplies; duet's k has the block's type.
+  if (!gain_type->starts_with("Inherit:")) {
+    context.refuse("ParamDataTypeStr '" + *gain_type + "': duet's Gain keeps k in its input's type");
+    return;
+  }
   if (*multiplication == "Matrix(K*u)" || *multiplication == "Matrix(K*u) (u vector)") {
     // K times the input taken as a column: a Constant K and a MatrixMultiply.
     const auto k = context.parameter("Gain");
@@ -149,9 +155,34 @@ void sum(ImportContext& context) {
 
 void product(ImportContext& context) {
   if (!inherits_type(context)) return;
-  if (!context.require("Multiplication", "Element-wise(.*)", "only the element-wise product is duet's Product")) return;
+  const auto multiplication = context.raw("Multiplication");
+  if (!multiplication) return;
+  const bool matrix = *multiplication == "Matrix(*)";
+  if (!matrix && *multiplication != "Element-wise(.*)") {
+    context.refuse("Multiplication '" + *multiplication + "': duet multiplies element-wise or as matrices (Matrix(*))");
+    return;
+  }
   const auto product_signs = signs(context, '*');
   if (!product_signs) return;
+  if (matrix) {
+    // u1 * u2 as matrices; a division would be a matrix inverse, and a longer chain is not imported.
+    if (*product_signs != "**") {
+      context.refuse("Inputs '" + *context.raw("Inputs") +
+                     "' with Matrix(*): duet's matrix product is of two inputs "
+                     "(**), without inverses");
+      return;
+    }
+    const auto a = context.input(1);
+    const auto b = context.input(2);
+    const auto period = context.period();
+    if (!a || !b || !period) return;
+    context.emit({.type = "MatrixMultiply",
+                  .inputs = {{"a", *a}, {"b", *b}},
+                  .outputs = {{"y", context.output(1)}},
+                  .period = *period},
+                 "MatrixMultiply u1 u2");
+    return;
+  }
   const auto inputs = numbered_inputs(context, product_signs->size());
   const auto period = context.period();
   if (!inputs || !period) return;
@@ -267,6 +298,12 @@ void logic(ImportContext& context) {
   }
   const auto count = port_count(context, "Inputs", 64);
   if (!count) return;
+  if (*count < 2) {
+    context.refuse("one input applies " + *operation +
+                   " across its elements, which duet's Logic does not: use two "
+                   "inputs or more");
+    return;
+  }
   const auto inputs = numbered_inputs(context, *count);
   if (!inputs) return;
   context.emit({.type = "Logic",
@@ -582,9 +619,17 @@ void dead_zone(ImportContext& context) {
 // The n-D Lookup Table with one dimension and explicit breakpoints.
 void lookup(ImportContext& context) {
   if (!context.require("NumberOfTableDimensions", "1", "duet's Interpolation has one dimension") ||
+      !context.require("DataSpecification", "Table and breakpoints",
+                       "the table and breakpoints must be the block's own, not a lookup table object's") ||
       !context.require("BreakpointsSpecification", "Explicit values", "give the breakpoints explicitly") ||
       !context.require("UseLastTableValue", "off", "duet's Interpolation does not use the last value that way"))
     return;
+  // Newer releases can take the table or the breakpoints from input ports; older files do not have the option.
+  for (const char* source : {"TableSource", "BreakpointsForDimension1Source"}) {
+    if (context.block().parameters.count(source) != 0 &&
+        !context.require(source, "Dialog", "a table or breakpoints from input ports are not duet's Interpolation's"))
+      return;
+  }
   static const std::map<std::string, std::string, std::less<>> methods{{"Linear point-slope", "linear"},
                                                                        {"Linear", "linear"},
                                                                        {"Nearest", "nearest"},
@@ -641,6 +686,10 @@ void math(ImportContext& context) {
                   .outputs = {{"y", context.output(1)}}},
                  "Product u u");
   } else if (*operation == "reciprocal") {
+    // Newton-Raphson approximates 1/u in a number of iterations; duet divides.
+    if (context.block().parameters.count("AlgorithmType") != 0 &&
+        !context.require("AlgorithmType", "Exact", "duet's reciprocal is the exact division 1/u"))
+      return;
     const std::string one = context.new_signal_name(context.block_name + "_one");
     context.emit({.name = context.new_block_name(context.block_name + "_one"),
                   .type = "Constant",

@@ -343,6 +343,8 @@ INSTANTIATE_TEST_SUITE_P(
                     "has)"},
         Unsupported{"matrix_gain", around(block_x("Gain", {{"Multiplication", "Matrix(u*K)"}})),
                     "m/X (Gain): Multiplication 'Matrix(u*K)': duet multiplies element-wise or K*u (Matrix(K*u))"},
+        Unsupported{"gain_type", around(block_x("Gain", {{"ParamDataTypeStr", "single"}})),
+                    "m/X (Gain): ParamDataTypeStr 'single': duet's Gain keeps k in its input's type"},
         Unsupported{"sine", around(block_x("Trigonometry")),
                     "m/X (Trigonometry): Operator sin: of the trigonometric functions duet has atan2"},
         Unsupported{"output_type", around(block_x("Gain", {{"OutDataTypeStr", "single"}})),
@@ -369,6 +371,24 @@ INSTANTIATE_TEST_SUITE_P(
                     "m/X (Gain): commented out (on): refused, uncomment or delete it"},
         Unsupported{"nxor", around(block_x("Logic", {{"Operator", "NXOR"}})),
                     "m/X (Logic): Operator NXOR is not one of duet's Logic (AND, OR, XOR, NAND, NOR, NOT)"},
+        Unsupported{"one_input_logic", around(block_x("Logic", {{"Operator", "OR"}, {"Inputs", "1"}})),
+                    "m/X (Logic): one input applies OR across its elements, which duet's Logic does not: use two "
+                    "inputs or more"},
+        Unsupported{"matrix_division", around(block_x("Product", {{"Multiplication", "Matrix(*)"}, {"Inputs", "*/"}})),
+                    "m/X (Product): Inputs '*/' with Matrix(*): duet's matrix product is of two inputs (**), without "
+                    "inverses"},
+        Unsupported{"newton_raphson_reciprocal",
+                    around(block_x("Math", {{"Operator", "reciprocal"}, {"AlgorithmType", "Newton-Raphson"}})),
+                    "m/X (Math): AlgorithmType is 'Newton-Raphson': duet's reciprocal is the exact division 1/u"},
+        Unsupported{"lookup_table_object",
+                    around(block_x("Lookup_n-D",
+                                   {{"NumberOfTableDimensions", "1"}, {"DataSpecification", "Lookup table object"}})),
+                    "m/X (Lookup_n-D): DataSpecification is 'Lookup table object': the table and breakpoints must "
+                    "be the block's own, not a lookup table object's"},
+        Unsupported{"table_from_port",
+                    around(block_x("Lookup_n-D", {{"NumberOfTableDimensions", "1"}, {"TableSource", "Input port"}})),
+                    "m/X (Lookup_n-D): TableSource is 'Input port': a table or breakpoints from input ports are not "
+                    "duet's Interpolation's"},
         Unsupported{"inherited_conversion", around(block_x("DataTypeConversion")),
                     "m/X (DataTypeConversion): OutDataTypeStr 'Inherit: Inherit via back propagation': duet's "
                     "Convert needs the output type written out (double, single, int8 ... uint32, boolean)"},
