@@ -340,6 +340,27 @@ void compare_to_constant(ImportContext& context) {
         "Compare " + operation + " " + *constant_value);
 }
 
+// Whether an option that only newer releases write is, where the block has it, `expected`; refuses with `what`
+// otherwise. A file of an older release, without it, computes as `expected` does.
+bool absent_or(ImportContext& context, const std::string& name, const std::string& expected, const std::string& what) {
+  const Block& block = context.block();
+  const bool stored = block.mask_parameters.count(name) != 0 || block.parameters.count(name) != 0;
+  return !stored || context.require(name, expected, what);
+}
+
+// Whether every data type the PID's dialog sets (PParamDataTypeStr, SumOutDataTypeStr, ...) is inherited: duet's
+// DiscretePid computes in its input's type throughout, Simulink's in the types set there.
+bool pid_types_inherited(ImportContext& context) {
+  for (const auto* values : {&context.block().mask_parameters, &context.block().parameters}) {
+    for (const auto& [name, text] : *values) {
+      if (!name.ends_with("DataTypeStr") || trimmed(text).starts_with("Inherit:")) continue;
+      context.refuse(name + " '" + text + "': duet's DiscretePid computes in its input's type throughout");
+      return false;
+    }
+  }
+  return true;
+}
+
 // The Discrete PID Controller (a library link, SourceType "PID 1dof"), for the options duet's DiscretePid has.
 void pid(ImportContext& context) {
   if (!context.require("TimeDomain", "Discrete-time", "a continuous-time PID is not discrete") ||
@@ -348,17 +369,28 @@ void pid(ImportContext& context) {
       !context.require("ControllerParametersSource", "internal", "gains from ports: not imported yet") ||
       !context.require("ExternalReset", "none", "an external reset is not imported yet") ||
       !context.require("InitialConditionSource", "internal", "the initial conditions must be the block's own") ||
-      !context.require("TrackingMode", "off", "duet's DiscretePid has no tracking mode"))
+      !context.require("TrackingMode", "off", "duet's DiscretePid has no tracking mode") ||
+      !absent_or(context, "UseExternalTs", "off", "a sample time from a port is not imported") ||
+      !pid_types_inherited(context))
     return;
   const auto controller = context.raw("Controller");
   if (!controller) return;
+  if (*controller != "P" && *controller != "I" && *controller != "PI" && *controller != "PD" && *controller != "PID") {
+    context.refuse("Controller '" + *controller + "' is not one of P, I, PI, PD, PID");
+    return;
+  }
+  const bool has_p = controller->find('P') != std::string::npos;
   const bool has_i = controller->find('I') != std::string::npos;
   const bool has_d = controller->find('D') != std::string::npos;
   TextPairs parameters;
-  const auto p = context.parameter("P");
+  // An I controller has no proportional term, whatever its dialog's P holds.
+  const auto p = has_p ? context.parameter("P") : std::optional<std::string>{"0"};
   if (!p) return;
   parameters.emplace_back("p", *p);
   if (has_i) {
+    if (!absent_or(context, "UseKiTs", "off", "the integral gain given as I*Ts is not imported") ||
+        !absent_or(context, "LimitIntegrator", "off", "duet's DiscretePid does not limit its integrator"))
+      return;
     const auto i = context.parameter("I");
     if (!i || !context.require("InitialConditionForIntegrator", "0", "duet's integrator starts at 0")) return;
     parameters.emplace_back("i", *i);
@@ -369,7 +401,8 @@ void pid(ImportContext& context) {
     const auto d = context.parameter("D");
     if (!d || !context.require("UseFilter", "on", "duet's derivative is always filtered") ||
         !context.require("FilterMethod", "Forward Euler", "duet's derivative filter is forward Euler") ||
-        !context.require("InitialConditionForFilter", "0", "duet's filter starts at 0"))
+        !context.require("InitialConditionForFilter", "0", "duet's filter starts at 0") ||
+        !absent_or(context, "UseExternalDerivativeSource", "off", "a derivative from a port is not imported"))
       return;
     const auto n = context.parameter("N");
     if (!n) return;
@@ -384,7 +417,9 @@ void pid(ImportContext& context) {
     const auto lower = context.parameter("LowerSaturationLimit");
     const auto upper = context.parameter("UpperSaturationLimit");
     const auto anti_windup = context.raw("AntiWindupMode");
-    if (!lower || !upper || !anti_windup) return;
+    if (!lower || !upper || !anti_windup ||
+        !absent_or(context, "SatLimitsSource", "internal", "output limits from ports are not imported"))
+      return;
     if (*anti_windup != "none" && *anti_windup != "clamping") {
       context.refuse("AntiWindupMode " + *anti_windup + ": duet's DiscretePid clamps or does nothing");
       return;
@@ -424,7 +459,9 @@ void data_type_conversion(ImportContext& context) {
   if (to_integer && (!context.require("RndMeth", "Zero", "duet's Convert rounds toward zero") ||
                      !context.require("SaturateOnIntegerOverflow", "on", "duet's Convert saturates")))
     return;
-  unary(context, "Convert", {{"type", found->second}}, false, "Convert to " + found->second);
+  // Its SampleTime, where the block stores one (a hidden parameter, written only when not -1); inherited otherwise.
+  const bool sampled = context.block().parameters.count("SampleTime") != 0;
+  unary(context, "Convert", {{"type", found->second}}, sampled, "Convert to " + found->second);
 }
 
 void mux(ImportContext& context) {

@@ -270,6 +270,34 @@ Block block_x(std::string type, std::map<std::string, std::string> parameters = 
   return x;
 }
 
+// A Discrete PID Controller X with the options duet imports, `changed` changed.
+Block pid_x(const std::map<std::string, std::string>& changed) {
+  std::map<std::string, std::string> parameters{{"SourceType", "PID 1dof"},
+                                                {"TimeDomain", "Discrete-time"},
+                                                {"Form", "Parallel"},
+                                                {"IntegratorMethod", "Forward Euler"},
+                                                {"FilterMethod", "Forward Euler"},
+                                                {"ControllerParametersSource", "internal"},
+                                                {"ExternalReset", "none"},
+                                                {"InitialConditionSource", "internal"},
+                                                {"TrackingMode", "off"},
+                                                {"Controller", "PID"},
+                                                {"P", "1"},
+                                                {"I", "1"},
+                                                {"D", "0.1"},
+                                                {"N", "100"},
+                                                {"UseFilter", "on"},
+                                                {"InitialConditionForIntegrator", "0"},
+                                                {"InitialConditionForFilter", "0"},
+                                                {"LimitOutput", "on"},
+                                                {"UpperSaturationLimit", "1"},
+                                                {"LowerSaturationLimit", "-1"},
+                                                {"AntiWindupMode", "clamping"},
+                                                {"SampleTime", "-1"}};
+  for (const auto& [name, value] : changed) parameters[name] = value;
+  return block_x("Reference", std::move(parameters));
+}
+
 SimulinkModel around(Block x, std::map<std::string, std::string> solver = {{"SolverName", "FixedStepDiscrete"},
                                                                            {"FixedStep", "0.01"}}) {
   SimulinkModel model{.name = "m", .release = "R2022b", .format = "slx (systems/)"};
@@ -402,6 +430,38 @@ INSTANTIATE_TEST_SUITE_P(
                     around(block_x("Reference",
                                    {{"SourceType", "PID 1dof"}, {"TimeDomain", "Discrete-time"}, {"Form", "Ideal"}})),
                     "m/X (PID 1dof): Form is 'Ideal': duet's DiscretePid is the parallel form"},
+        Unsupported{"pid_controller", around(pid_x({{"Controller", "PIDF"}})),
+                    "m/X (PID 1dof): Controller 'PIDF' is not one of P, I, PI, PD, PID"},
+        Unsupported{"pid_unfiltered", around(pid_x({{"UseFilter", "off"}})),
+                    "m/X (PID 1dof): UseFilter is 'off': duet's derivative is always filtered"},
+        Unsupported{"pid_integrator_initial", around(pid_x({{"InitialConditionForIntegrator", "1"}})),
+                    "m/X (PID 1dof): InitialConditionForIntegrator is '1': duet's integrator starts at 0"},
+        Unsupported{"pid_back_calculation", around(pid_x({{"AntiWindupMode", "back-calculation"}})),
+                    "m/X (PID 1dof): AntiWindupMode back-calculation: duet's DiscretePid clamps or does nothing"},
+        Unsupported{"pid_typed", around(pid_x({{"SumOutDataTypeStr", "single"}})),
+                    "m/X (PID 1dof): SumOutDataTypeStr 'single': duet's DiscretePid computes in its input's type "
+                    "throughout"},
+        Unsupported{"pid_external_sample_time", around(pid_x({{"UseExternalTs", "on"}})),
+                    "m/X (PID 1dof): UseExternalTs is 'on': a sample time from a port is not imported"},
+        Unsupported{"pid_i_times_ts", around(pid_x({{"UseKiTs", "on"}})),
+                    "m/X (PID 1dof): UseKiTs is 'on': the integral gain given as I*Ts is not imported"},
+        Unsupported{"pid_integrator_limits", around(pid_x({{"LimitIntegrator", "on"}})),
+                    "m/X (PID 1dof): LimitIntegrator is 'on': duet's DiscretePid does not limit its integrator"},
+        Unsupported{"pid_external_derivative", around(pid_x({{"UseExternalDerivativeSource", "on"}})),
+                    "m/X (PID 1dof): UseExternalDerivativeSource is 'on': a derivative from a port is not imported"},
+        Unsupported{"pid_external_limits", around(pid_x({{"SatLimitsSource", "external"}})),
+                    "m/X (PID 1dof): SatLimitsSource is 'external': output limits from ports are not imported"},
+        Unsupported{
+            "conversion_wraps",
+            around(block_x("DataTypeConversion", {{"OutDataTypeStr", "int8"}, {"SaturateOnIntegerOverflow", "off"}})),
+            "m/X (DataTypeConversion): SaturateOnIntegerOverflow is 'off': duet's Convert saturates"},
+        Unsupported{"conversion_rounds_to_nearest",
+                    around(block_x("DataTypeConversion", {{"OutDataTypeStr", "uint8"}, {"RndMeth", "Nearest"}})),
+                    "m/X (DataTypeConversion): RndMeth is 'Nearest': duet's Convert rounds toward zero"},
+        Unsupported{"conversion_sample_time",
+                    around(block_x("DataTypeConversion", {{"OutDataTypeStr", "single"}, {"SampleTime", "0.015"}})),
+                    "m/X (DataTypeConversion): SampleTime 0.015 s is not a whole multiple of the base period of "
+                    "10000 us"},
         Unsupported{"global_goto", around(block_x("Goto", {{"TagVisibility", "global"}})),
                     "m/X (Goto): a scoped or global tag: refused, use lines or local tags"},
         Unsupported{"single_tasking_rate_transition",
