@@ -218,6 +218,38 @@ TEST(Import, APackagedTextMdlWithTheBasePeriodGiven) {
   EXPECT_EQ(plant.history.at("outport:voltage"), (std::vector<double>{2.0, 2.0, 2.0}));  // 0.8 speed, every 5 ms
 }
 
+// The classic .mdl controller (ISO-8859-1, its variables in controller.m, Ts 5 ms) imported and simulated on a tilt
+// of 0.001 for six steps, then 0: Verstärkung is K_theta.*scale = 3 (a product, so a literal), the masked Filter's
+// alpha 0.9, the Sum |+- their difference e = 2.1 theta, the PI (P 3500, Ki 1000, forward Euler) limited to
+// +-Prop.MaxForce = 7.38 with clamping, the Unit Delay a step late from 0; the Logger only ends the tilt.
+TEST(Import, TheClassicMdlControllerComputesWhatItsSimulinkBlocksDo) {
+  auto model = read_simulink_file(testing / "controller.mdl");
+  ASSERT_TRUE(model) << model.error();
+  auto variables = read_variable_files({(testing / "controller.m").string()});
+  ASSERT_TRUE(variables) << variables.error();
+  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  EXPECT_THAT(imported.model_text, HasSubstr("base_period_us: 5000\n"));
+  EXPECT_EQ(verdict(imported, "balance_controller/Verst\xC3\xA4rkung").what, "Gain k: 3");
+  EXPECT_EQ(verdict(imported, "balance_controller/Discrete PID Controller").what, "DiscretePid (PI)");
+  EXPECT_THAT(imported.model_text, HasSubstr("  Ki: {value: 1000, "));  // tunable, by its name
+  EXPECT_THAT(imported.model_text, HasSubstr("  Prop_MaxForce: {value: 7.38, "));
+  Ports plant{
+      std::map<std::string, Ports::Inport>{{"inport:theta", [](std::size_t step) { return step < 6 ? 0.001 : 0.0; }},
+                                           {"inport:theta_rate", [](std::size_t) { return 0.0; }}}};
+  plant.period_s = 0.005;
+  ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0.04, .record_plant = false}));
+  // e = 0.0021 while the tilt is 0.001: P e = 7.35, and each step adds Ki Ts e = 0.0105 to the integrator (from 0).
+  // Step 3's sum 7.3815 is beyond 7.38: the output is 7.38 and, e pushing further, the integrator stays at 0.0315
+  // (clamping) until e is 0 at step 6, where the output is the integrator alone. Torque is the output a step late.
+  const std::vector<double> expected{0, 7.35, 7.3605, 7.371, 7.38, 7.38, 7.38, 0.0315, 0.0315};
+  const std::vector<double>& torque = plant.history.at("outport:torque");
+  ASSERT_EQ(torque.size(), expected.size());
+  for (std::size_t step = 0; step < expected.size(); ++step) EXPECT_NEAR(torque[step], expected[step], 1e-12) << step;
+}
+
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
 // triggered on the clock's rising edges (its count advancing only then), and a function-call subsystem that
 // --interrupt makes an interrupt task, fed and read through rate transitions; the interrupt block that called it in
