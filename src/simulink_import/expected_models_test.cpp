@@ -129,7 +129,9 @@ TEST_P(ExpectedModels, TheImportGivesTheCommittedTextWhole) {
   const std::filesystem::path expected_file = testing_folder / "expected" / test.expected;
   const char* update = std::getenv("DUET_UPDATE_EXPECTED_MODELS");
   if (update != nullptr && std::string{update} == "1") {
-    std::ofstream{expected_file, std::ios::binary} << actual;
+    std::ofstream out{expected_file, std::ios::binary};
+    out << actual;
+    ASSERT_TRUE(out.flush()) << "cannot write " << expected_file.string();
     return;
   }
   const auto expected = read_text_file(expected_file.string());
