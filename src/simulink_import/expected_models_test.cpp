@@ -1,5 +1,5 @@
-// Each hand-written test model imports to exactly the duet model committed for it in testing/expected/, compared as
-// a whole: a change of the importer's output shows as a diff in review. A deliberate change is one command,
+// The import of each hand-written test model gives exactly the duet model committed for it in testing/expected/,
+// compared as a whole: a change of the importer's output shows as a diff in review. A deliberate change is one command,
 //   DUET_UPDATE_EXPECTED_MODELS=1 ctest --test-dir build/host -R ExpectedModels
 // which rewrites the files in the source tree, and a `git diff` to read before committing them.
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <ostream>
 #include <string>
 #include <tuple>
@@ -164,6 +165,7 @@ INSTANTIATE_TEST_SUITE_P(
         TestModel{"slx_r2014a.yaml", "slx_r2014a", "scaled_lag.slx", {}, with_variables({{"pole", 0.5}})},
         TestModel{"slx_r2019b.yaml", "slx_r2019b", "tilt_loop.slx", {}, with_variables({{"Ts", 0.01}, {"Kp", 2}})},
         TestModel{"slx_r2021a.yaml", "slx_r2021a", "signal_chain.slx", {}, {}},
+        // Refused: its PID link lacks values a saved link always has (Import.RefusesWhatItCannotProveEqual...).
         TestModel{"slx_r2022b.refused", "slx_r2022b", "pid_loop.slx", {}, {}},
         TestModel{
             "tilt_controller_r2022b.yaml", "tilt_controller_r2022b", "tilt_controller.slx", {"tilt_controller.m"}, {}},
