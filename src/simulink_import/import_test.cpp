@@ -34,6 +34,21 @@ using ::testing::HasSubstr;
 
 const std::filesystem::path testing = DUET_SIMULINK_TESTING_DIR;
 
+// A test model imported with the variables of a script in testing/; where either cannot be read, the test fails and
+// the result is empty.
+ImportResult imported_with(const Result<SimulinkModel>& model, const std::string& script) {
+  if (!model) {
+    ADD_FAILURE() << model.error();
+    return {};
+  }
+  auto variables = read_variable_files({(testing / script).string()});
+  if (!variables) {
+    ADD_FAILURE() << variables.error();
+    return {};
+  }
+  return import_simulink(model.value(), {.variables = variables.value()});
+}
+
 TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   const SimulinkModel model = read_slx_model(parts_of(testing / "slx_r2019b"), "tilt_loop.slx").value();
   ImportOptions options;
@@ -141,11 +156,8 @@ TEST(Import, TheOldestLayoutWithItsInlineDefaultsConfigurationAndMaskObject) {
 // the discrete PID with clamping, the duty's limit, and a triggered subsystem counting falls. It imports and checks,
 // its variables tunable parameters of their names.
 TEST(Import, TheBalancingLoopImportsAndChecks) {
-  const auto model = read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx");
-  ASSERT_TRUE(model) << model.error();
-  auto variables = read_variable_files({(testing / "tilt_controller.m").string()});
-  ASSERT_TRUE(variables) << variables.error();
-  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  const ImportResult imported = imported_with(
+      read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx"), "tilt_controller.m");
   std::unique_ptr<model::Model> keep;
   const auto build = checked(imported, keep);
   ASSERT_TRUE(build);
@@ -160,11 +172,8 @@ TEST(Import, TheBalancingLoopImportsAndChecks) {
 // the imported controller in place of its own loop; held at 5 degrees until 2 s, as apps/balbot's tests hold it.
 TEST(Import, TheImportedBalancingLoopBalancesTheSimulatedRobot) {
   auto folder = TemporaryFolder::make("import_balancing_").value();
-  const auto model = read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx");
-  ASSERT_TRUE(model) << model.error();
-  auto variables = read_variable_files({(testing / "tilt_controller.m").string()});
-  ASSERT_TRUE(variables) << variables.error();
-  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  const ImportResult imported = imported_with(
+      read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx"), "tilt_controller.m");
   ASSERT_TRUE(imported.problems.empty()) << ::testing::PrintToString(imported.problems);
   std::ofstream{folder.path() / "tilt_controller.yaml"} << imported.model_text;
   std::filesystem::copy_file(testing / "balbot_harness.yaml", folder.path() / "balbot_harness.yaml");
@@ -223,11 +232,7 @@ TEST(Import, APackagedTextMdlWithTheBasePeriodGiven) {
 // alpha 0.9, the Sum |+- their difference e = 2.1 theta, the PI (P 3500, Ki 1000, forward Euler) limited to
 // +-Prop.MaxForce = 7.38 with clamping, the Unit Delay a step late from 0; the Logger only ends the tilt.
 TEST(Import, TheClassicMdlControllerComputesWhatItsSimulinkBlocksDo) {
-  auto model = read_simulink_file(testing / "controller.mdl");
-  ASSERT_TRUE(model) << model.error();
-  auto variables = read_variable_files({(testing / "controller.m").string()});
-  ASSERT_TRUE(variables) << variables.error();
-  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  const ImportResult imported = imported_with(read_simulink_file(testing / "controller.mdl"), "controller.m");
   std::unique_ptr<model::Model> keep;
   const auto build = checked(imported, keep);
   ASSERT_TRUE(build);
