@@ -613,10 +613,11 @@ void delay(ImportContext& context) {
   const auto steps = static_cast<std::size_t>(*length);
   std::string signal = *u;
   for (std::size_t step = 1; step <= steps; ++step) {
-    const std::string next =
-        step == steps ? context.output(1) : context.new_signal_name(context.block_name + "_" + std::to_string(step));
-    context.emit({.name = step == 1 ? context.block_name
-                                    : context.new_block_name(context.block_name + "_" + std::to_string(step)),
+    // The last delay is the block's own name, as the signal it drives: late_1 -> late_2 -> late.
+    const bool last = step == steps;
+    const std::string stem = context.block_name + "_" + std::to_string(step);
+    const std::string next = last ? context.output(1) : context.new_signal_name(stem);
+    context.emit({.name = last ? context.block_name : context.new_block_name(stem),
                   .type = "UnitDelay",
                   .parameters = {{"initial", *initial}},
                   .inputs = {{"u", signal}},

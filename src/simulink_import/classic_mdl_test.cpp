@@ -88,8 +88,8 @@ TEST(ClassicMdl, ReadsTheRootSystemsBlocksInFileOrderConvertedToUtf8) {
   EXPECT_EQ(sum.output_names, (std::map<int, std::string>{{1, "Regelabweichung \xC2\xB1"}}));
   EXPECT_EQ(block_named(model.root, "Unit\nDelay").parameters,
             (Parameters{{"InitialCondition", "0"}, {"SampleTime", "Ts"}}));
-  EXPECT_EQ(block_named(model.root, "theta").line, 68);
-  EXPECT_EQ(block_named(model.root, "torque").line, 218);
+  EXPECT_EQ(block_named(model.root, "theta").line, 69);
+  EXPECT_EQ(block_named(model.root, "torque").line, 225);
 }
 
 TEST(ClassicMdl, ReadsAMaskedSubsystemWithItsContents) {
@@ -120,7 +120,12 @@ TEST(ClassicMdl, KeepsALibraryLinksFlattenedMaskValuesAsParameters) {
                                         {"LimitOutput", "on"},
                                         {"UpperSaturationLimit", "Prop.MaxForce"},
                                         {"LowerSaturationLimit", "-Prop.MaxForce"},
-                                        {"AntiWindupMode", "clamping"}}));
+                                        {"AntiWindupMode", "clamping"},
+                                        {"ControllerParametersSource", "internal"},
+                                        {"InitialConditionSource", "internal"},
+                                        {"InitialConditionForIntegrator", "0"},
+                                        {"ExternalReset", "none"},
+                                        {"TrackingMode", "off"}}));
   EXPECT_TRUE(pid.mask_parameters.empty());
   EXPECT_TRUE(pid.systems.empty());
 }
@@ -135,7 +140,8 @@ TEST(ClassicMdl, FlattensBranchesAndReadsSpecialPorts) {
                                    ": Unit\nDelay out 1 -> torque in 1,", ": theta rate out 1 -> Logger trigger 1,"));
   const Block& logger = block_named(model.root, "Logger");
   ASSERT_EQ(logger.systems.size(), 1U);
-  EXPECT_EQ(block_named(logger.systems[0], "Trigger").parameters, (Parameters{{"TriggerType", "rising"}}));
+  EXPECT_EQ(block_named(logger.systems[0], "Trigger").parameters,
+            (Parameters{{"TriggerType", "rising"}, {"InitialTriggerSignalState", "zero"}}));
   EXPECT_THAT(describe(logger.systems[0].lines), testing::ElementsAre(": u out 1 -> Terminator in 1,"));
 }
 

@@ -32,7 +32,8 @@ void write_block(const DuetBlock& block, const std::string& indent, std::string&
   if (!block.inputs.empty()) text += inner + "inputs: " + pairs(block.inputs) + "\n";
   if (!block.outputs.empty()) text += inner + "outputs: " + pairs(block.outputs) + "\n";
   if (block.type == "Subsystem") {
-    text += inner + "blocks:\n";
+    // A subsystem whose blocks all come to nothing (a Terminator alone) is still one: an empty list.
+    text += inner + (block.blocks.empty() ? "blocks: []\n" : "blocks:\n");
     for (const DuetBlock& child : block.blocks) write_block(child, inner + "  ", text);
   }
 }

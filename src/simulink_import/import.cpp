@@ -327,9 +327,7 @@ class Importer final : public ImportModel {
                   {input_signals(block, "trigger"), trigger_driver(block), root}, blocks, names, signals, verdict);
         continue;
       }
-      const std::string type = block.type == "Reference" && block.parameters.count("SourceType") != 0
-                                   ? block.parameters.at("SourceType")
-                                   : block.type;
+      const std::string type = type_name(block);
       verdict.type = type;
       const BlockMapping mapping = mapping_for(type);
       if (mapping == nullptr) {

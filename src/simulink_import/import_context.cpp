@@ -16,6 +16,11 @@ std::string stored_or(const Block& block, const char* name, const char* otherwis
   return found == block.parameters.end() ? std::string{otherwise} : trimmed(found->second);
 }
 
+std::string type_name(const Block& block) {
+  const auto linked = block.parameters.find("SourceType");
+  return block.type == "Reference" && linked != block.parameters.end() ? linked->second : block.type;
+}
+
 std::optional<std::string> ImportContext::raw(const std::string& name) {
   if (const auto masked = block_.mask_parameters.find(name); masked != block_.mask_parameters.end())
     return masked->second;
@@ -116,7 +121,7 @@ std::optional<std::string> ImportContext::period(const std::string& name) {
 
 void ImportContext::emit(DuetBlock block, const std::string& what) {
   if (block.name.empty()) block.name = block_name;
-  block.source = path_ + " (" + block_.type + ")";
+  block.source = path_ + " (" + type_name(block_) + ")";
   emitted_.push_back(std::move(block));
   if (!what.empty()) what_ += (what_.empty() ? "" : "; ") + what;
 }

@@ -21,6 +21,9 @@ class ImportContext;
 // A block's parameter as stored, trimmed, or `otherwise` where the block does not store it.
 [[nodiscard]] std::string stored_or(const Block& block, const char* name, const char* otherwise);
 
+// What a block is: a library link by what it links to (its SourceType, "PID 1dof"), any other by its BlockType.
+[[nodiscard]] std::string type_name(const Block& block);
+
 // Turns `context.block()` into duet blocks (context.emit) or refuses it (context.refuse).
 using BlockMapping = void (*)(ImportContext& context);
 

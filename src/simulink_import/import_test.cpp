@@ -34,6 +34,21 @@ using ::testing::HasSubstr;
 
 const std::filesystem::path testing = DUET_SIMULINK_TESTING_DIR;
 
+// A test model imported with the variables of a script in testing/; where either cannot be read, the test fails and
+// the result is empty.
+ImportResult imported_with(const Result<SimulinkModel>& model, const std::string& script) {
+  if (!model) {
+    ADD_FAILURE() << model.error();
+    return {};
+  }
+  auto variables = read_variable_files({(testing / script).string()});
+  if (!variables) {
+    ADD_FAILURE() << variables.error();
+    return {};
+  }
+  return import_simulink(model.value(), {.variables = variables.value()});
+}
+
 TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   const SimulinkModel model = read_slx_model(parts_of(testing / "slx_r2019b"), "tilt_loop.slx").value();
   ImportOptions options;
@@ -141,11 +156,8 @@ TEST(Import, TheOldestLayoutWithItsInlineDefaultsConfigurationAndMaskObject) {
 // the discrete PID with clamping, the duty's limit, and a triggered subsystem counting falls. It imports and checks,
 // its variables tunable parameters of their names.
 TEST(Import, TheBalancingLoopImportsAndChecks) {
-  const auto model = read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx");
-  ASSERT_TRUE(model) << model.error();
-  auto variables = read_variable_files({(testing / "tilt_controller.m").string()});
-  ASSERT_TRUE(variables) << variables.error();
-  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  const ImportResult imported = imported_with(
+      read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx"), "tilt_controller.m");
   std::unique_ptr<model::Model> keep;
   const auto build = checked(imported, keep);
   ASSERT_TRUE(build);
@@ -160,11 +172,8 @@ TEST(Import, TheBalancingLoopImportsAndChecks) {
 // the imported controller in place of its own loop; held at 5 degrees until 2 s, as apps/balbot's tests hold it.
 TEST(Import, TheImportedBalancingLoopBalancesTheSimulatedRobot) {
   auto folder = TemporaryFolder::make("import_balancing_").value();
-  const auto model = read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx");
-  ASSERT_TRUE(model) << model.error();
-  auto variables = read_variable_files({(testing / "tilt_controller.m").string()});
-  ASSERT_TRUE(variables) << variables.error();
-  const ImportResult imported = import_simulink(model.value(), {.variables = variables.value()});
+  const ImportResult imported = imported_with(
+      read_slx_model(parts_of(testing / "tilt_controller_r2022b"), "tilt_controller.slx"), "tilt_controller.m");
   ASSERT_TRUE(imported.problems.empty()) << ::testing::PrintToString(imported.problems);
   std::ofstream{folder.path() / "tilt_controller.yaml"} << imported.model_text;
   std::filesystem::copy_file(testing / "balbot_harness.yaml", folder.path() / "balbot_harness.yaml");
@@ -216,6 +225,34 @@ TEST(Import, APackagedTextMdlWithTheBasePeriodGiven) {
   Ports plant{{{"inport:speed", 2.5}}};
   ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0.01, .record_plant = false}));
   EXPECT_EQ(plant.history.at("outport:voltage"), (std::vector<double>{2.0, 2.0, 2.0}));  // 0.8 speed, every 5 ms
+}
+
+// The classic .mdl controller (ISO-8859-1, its variables in controller.m, Ts 5 ms) imported and simulated on a tilt
+// of 0.001 for six steps, then 0: Verstärkung is K_theta.*scale = 3 (a product, so a literal), the masked Filter's
+// alpha 0.9, the Sum |+- their difference e = 2.1 theta, the PI (P 3500, Ki 1000, forward Euler) limited to
+// +-Prop.MaxForce = 7.38 with clamping, the Unit Delay a step late from 0; the Logger only ends the tilt.
+TEST(Import, TheClassicMdlControllerComputesWhatItsSimulinkBlocksDo) {
+  const ImportResult imported = imported_with(read_simulink_file(testing / "controller.mdl"), "controller.m");
+  std::unique_ptr<model::Model> keep;
+  const auto build = checked(imported, keep);
+  ASSERT_TRUE(build);
+  EXPECT_THAT(imported.model_text, HasSubstr("base_period_us: 5000\n"));
+  EXPECT_EQ(verdict(imported, "balance_controller/Verst\xC3\xA4rkung").what, "Gain k: 3");
+  EXPECT_EQ(verdict(imported, "balance_controller/Discrete PID Controller").what, "DiscretePid (PI)");
+  EXPECT_THAT(imported.model_text, HasSubstr("  Ki: {value: 1000, "));  // tunable, by its name
+  EXPECT_THAT(imported.model_text, HasSubstr("  Prop_MaxForce: {value: 7.38, "));
+  Ports plant{
+      std::map<std::string, Ports::Inport>{{"inport:theta", [](std::size_t step) { return step < 6 ? 0.001 : 0.0; }},
+                                           {"inport:theta_rate", [](std::size_t) { return 0.0; }}}};
+  plant.period_s = 0.005;
+  ASSERT_TRUE(model::simulate(*build->program, plant, {.duration_s = 0.04, .record_plant = false}));
+  // e = 0.0021 while the tilt is 0.001: P e = 7.35, and each step adds Ki Ts e = 0.0105 to the integrator (from 0).
+  // Step 3's sum 7.3815 is beyond 7.38: the output is 7.38 and, e pushing further, the integrator stays at 0.0315
+  // (clamping) until e is 0 at step 6, where the output is the integrator alone. Torque is the output a step late.
+  const std::vector<double> expected{0, 7.35, 7.3605, 7.371, 7.38, 7.38, 7.38, 0.0315, 0.0315};
+  const std::vector<double>& torque = plant.history.at("outport:torque");
+  ASSERT_EQ(torque.size(), expected.size());
+  for (std::size_t step = 0; step < expected.size(); ++step) EXPECT_NEAR(torque[step], expected[step], 1e-12) << step;
 }
 
 // Subsystems of each kind, from a classic .mdl: enabled while the gate is positive (outputs held otherwise),
