@@ -168,8 +168,8 @@ struct ReferencePid {
     if (y != limit(g.p * error + (integrator + derivative))) ++output_order_mattered;
     filter = filter + period_s * derivative;
     const T previous_integrator = integrator;
-    integrator = integrator + g.i * period_s * error;
-    if (integrator != previous_integrator + g.i * (period_s * error)) ++integrator_order_mattered;
+    integrator = integrator + period_s * (g.i * error);  // Simulink's order: the gain, then the integrator's Ts
+    if (integrator != previous_integrator + g.i * period_s * error) ++integrator_order_mattered;
     return y;
   }
 };
@@ -190,9 +190,9 @@ ReferencePid<T> expect_pid_matches_reference(const PidGains<T>& gains, T period_
 
 TEST(BlocksDiscretePid, MatchesTheReferenceBitForBitOverFiveSteps) {
   const auto in_double = expect_pid_matches_reference<double>(
-      {.p = 1.3, .i = 0.7, .d = 0.11, .n = 30.0, .lower = -2.0, .upper = 2.0}, 0.01, {0.01, 0.45, -0.3, 1.7, 0.05});
+      {.p = 1.3, .i = 5.0, .d = 0.11, .n = 30.0, .lower = -2.0, .upper = 2.0}, 0.01, {0.01, 0.45, -0.3, 1.7, 0.05});
   const auto in_float =
-      expect_pid_matches_reference<float>({.p = 1.3F, .i = 0.7F, .d = 0.11F, .n = 30.0F, .lower = -2.0F, .upper = 2.0F},
+      expect_pid_matches_reference<float>({.p = 1.3F, .i = 5.0F, .d = 0.11F, .n = 30.0F, .lower = -2.0F, .upper = 2.0F},
                                           0.01F, {0.01F, 0.45F, -0.3F, 1.7F, 0.05F});
   EXPECT_GT(in_double.output_order_mattered + in_float.output_order_mattered, 0);
   EXPECT_GT(in_double.integrator_order_mattered + in_float.integrator_order_mattered, 0);

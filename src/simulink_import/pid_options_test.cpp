@@ -143,15 +143,16 @@ TEST(PidOptions, EachControllerComputesWhatSimulinksDiscretePidDoes) {
   PidDialog<double> clamped = limited;
   clamped.clamping = true;
   const PidDialog<double> i_only{.i = 20};
-  constexpr double tolerance = 1e-12;  // Simulink's order of rounding (Ts (I e)) is not duet's ((I Ts) e)
-  expect_near(y.at("y_p"), simulink_pid(p, error_at), tolerance, "P");
-  expect_near(y.at("y_pi"), simulink_pid(pi, error_at), tolerance, "PI");
-  expect_near(y.at("y_pd"), simulink_pid(pd, error_at), tolerance, "PD");
-  expect_near(y.at("y_pid"), simulink_pid(pid, error_at), tolerance, "PID");
-  expect_near(y.at("y_pid_limited"), simulink_pid(limited, error_at), tolerance, "PID limited");
-  expect_near(y.at("y_pid_clamped"), simulink_pid(clamped, error_at), tolerance, "PID clamped");
-  expect_near(y.at("y_i"), simulink_pid(i_only, error_at), tolerance, "I");
+  constexpr double exactly = 0;  // duet rounds in the order of Simulink's block
+  expect_near(y.at("y_p"), simulink_pid(p, error_at), exactly, "P");
+  expect_near(y.at("y_pi"), simulink_pid(pi, error_at), exactly, "PI");
+  expect_near(y.at("y_pd"), simulink_pid(pd, error_at), exactly, "PD");
+  expect_near(y.at("y_pid"), simulink_pid(pid, error_at), exactly, "PID");
+  expect_near(y.at("y_pid_limited"), simulink_pid(limited, error_at), exactly, "PID limited");
+  expect_near(y.at("y_pid_clamped"), simulink_pid(clamped, error_at), exactly, "PID clamped");
+  expect_near(y.at("y_i"), simulink_pid(i_only, error_at), exactly, "I");
 
+  constexpr double tolerance = 1e-12;  // the decimal values by hand are not the steps' binary sums
   // A few values by hand. P: 2 e. PI: e + 0.2 k for an error of 1 held k steps.
   EXPECT_EQ(y.at("y_p")[39], 2.0);
   EXPECT_EQ(y.at("y_p")[40], -1.0);
@@ -199,7 +200,7 @@ TEST(PidOptions, ConversionsAndTheSingleTypedChainComputeWhatSimulinkDoes) {
   // PI on x in single: P 0.5, I 10, limited to [-1, 1] with clamping. At x = 1.5: 0.75, 0.9, then 1.05 beyond 1 holds
   // the integrator at 0.3 until x turns; at x = -0.7: -0.35 + 0.3 = -0.05, then 0.07 a step down until -1 holds it.
   const PidDialog<float> pi_single{.p = 0.5F, .i = 10, .lower = -1, .upper = 1, .clamping = true};
-  expect_near(y.at("y_pi_single"), simulink_pid(pi_single, x_at), 1e-6, "PI single");
+  expect_near(y.at("y_pi_single"), simulink_pid(pi_single, x_at), 0, "PI single");
   EXPECT_NEAR(y.at("y_pi_single")[1], 0.9, 1e-6);
   EXPECT_EQ(y.at("y_pi_single")[10], 1.0);
   EXPECT_NEAR(y.at("y_pi_single")[20], -0.05, 1e-6);

@@ -80,15 +80,16 @@ struct PidGains {
 
 // Simulink's parallel discrete PID with forward Euler for both the integrator and the derivative filter:
 //   P + I * Ts / (z - 1) + D * N / (1 + N * Ts / (z - 1))
-// with the output limited. update() has no anti-windup (the integrator keeps integrating while the output saturates):
+// with the output limited, rounded in the order of Simulink's block (the integral gain, then the integrator's Ts).
+// update() has no anti-windup (the integrator keeps integrating while the output saturates):
 //   derivative = multiply(n, subtract(multiply(d, error), filter))
 //   y          = saturate(add(add(multiply(p, error), integrator), derivative), lower, upper)
 //   filter     = add(filter, multiply(period_s, derivative))
-//   integrator = add(integrator, multiply(multiply(i, period_s), error))
+//   integrator = add(integrator, multiply(period_s, multiply(i, error)))
 // update_clamped() is Simulink's "clamping" anti-windup: it updates filter as above but leaves the integrator as it is
 // in a step where integrating would drive the output further into saturation, that is where
 //   unlimited = add(add(multiply(p, error), integrator), derivative)    (y before saturate)
-//   increment = multiply(multiply(i, period_s), error)                  (what update() would add)
+//   increment = multiply(period_s, multiply(i, error))                  (what update() would add)
 //   (unlimited > upper and increment > 0) or (unlimited < lower and increment < 0)
 // The sign that counts is the integrator input's, compared with the sign of the excess unlimited - saturate(unlimited),
 // as Simulink does; it is the error's sign for positive i and period_s. An output exactly at a limit has no excess: the
@@ -113,13 +114,13 @@ struct DiscretePid {
   constexpr void update(T error, const PidGains<T>& gains, T period_s) {
     const T filter_input = derivative(error, gains);  // before filter changes: the same value output() used
     filter = add(filter, multiply(period_s, filter_input));
-    integrator = add(integrator, multiply(multiply(gains.i, period_s), error));
+    integrator = add(integrator, multiply(period_s, multiply(gains.i, error)));
   }
 
   constexpr void update_clamped(T error, const PidGains<T>& gains, T period_s) {
     const T filter_input = derivative(error, gains);
     const T unlimited = add(add(multiply(gains.p, error), integrator), filter_input);
-    const T increment = multiply(multiply(gains.i, period_s), error);
+    const T increment = multiply(period_s, multiply(gains.i, error));
     const bool clamped = (unlimited > gains.upper && increment > T{0}) || (unlimited < gains.lower && increment < T{0});
     filter = add(filter, multiply(period_s, filter_input));
     if (!clamped) integrator = add(integrator, increment);
