@@ -12,6 +12,7 @@
 
 #include "duet/model/simulation.hpp"
 #include "duet/simulink_import/import.hpp"
+#include "duet/simulink_import/import_options.hpp"
 #include "duet/simulink_import/slx_model.hpp"
 #include "testing/import_harness.hpp"
 #include "testing/package_folder.hpp"
@@ -37,13 +38,9 @@ class BlockOptions : public ::testing::Test {
     ASSERT_TRUE(model) << model.error();
     ASSERT_EQ(model.value().release, "R2020a");
     ASSERT_EQ(model.value().format, "slx (systems/)");
-    ImportOptions options;
-    options.variables["threshold"] = Value::scalar(1);
-    options.variables["sat_upper"] = Value::scalar(3);
-    options.variables["sat_lower"] = Value::scalar(-0.5);
-    options.variables["delay_start"] = Value::scalar(-4);
-    options.variables["K"] = Value::matrix(2, 2, {1, -1, 0.5, 2});
-    imported_ = import_simulink(model.value(), options);
+    auto variables = read_variable_files({(testing / "options_r2020a.m").string()});
+    ASSERT_TRUE(variables) << variables.error();
+    imported_ = import_simulink(model.value(), {.variables = variables.value()});
     const auto build = checked(imported_, keep_);
     ASSERT_TRUE(build);
     plant_.period_s = 0.25;

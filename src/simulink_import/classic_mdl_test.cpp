@@ -80,7 +80,7 @@ TEST(ClassicMdl, ReadsTheRootSystemsBlocksInFileOrderConvertedToUtf8) {
                            "SubSystem Logger #11", "Outport torque #15"));
   EXPECT_EQ(block_named(model.root, "theta").parameters, (Parameters{{"Position", "[20, 98, 50, 112]"}}));
   EXPECT_EQ(block_named(model.root, "theta rate").parameters,
-            (Parameters{{"Position", "[20, 198, 50, 212]"}, {"Port", "2"}}));
+            (Parameters{{"Position", "[20, 198, 50, 212]"}, {"Port", "2"}, {"OutDataTypeStr", "boolean"}}));
   // Two quoted chunks on consecutive lines are one value.
   EXPECT_EQ(block_named(model.root, "Verst\xC3\xA4rkung").parameters, (Parameters{{"Gain", "K_theta.*scale"}}));
   const Block& sum = block_named(model.root, "Sum");
@@ -89,7 +89,7 @@ TEST(ClassicMdl, ReadsTheRootSystemsBlocksInFileOrderConvertedToUtf8) {
   EXPECT_EQ(block_named(model.root, "Unit\nDelay").parameters,
             (Parameters{{"InitialCondition", "0"}, {"SampleTime", "Ts"}}));
   EXPECT_EQ(block_named(model.root, "theta").line, 69);
-  EXPECT_EQ(block_named(model.root, "torque").line, 225);
+  EXPECT_EQ(block_named(model.root, "torque").line, 226);
 }
 
 TEST(ClassicMdl, ReadsAMaskedSubsystemWithItsContents) {

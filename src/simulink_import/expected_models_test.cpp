@@ -171,7 +171,9 @@ INSTANTIATE_TEST_SUITE_P(
             "tilt_controller_r2022b.yaml", "tilt_controller_r2022b", "tilt_controller.slx", {"tilt_controller.m"}, {}},
         TestModel{"controller.yaml", "controller.mdl", {}, {"controller.m"}, {}},
         TestModel{"subsystems.yaml", "subsystems.mdl", {}, {}, with_interrupt("subsystems/ISR", {"TIM2", 3})},
-        TestModel{"packaged_r2025b.yaml", "packaged_r2025b.mdl", {}, {}, {.base_period_us = 5000}}),
+        TestModel{"packaged_r2025b.yaml", "packaged_r2025b.mdl", {}, {}, {.base_period_us = 5000}},
+        TestModel{"options_r2020a.yaml", "options_r2020a", "options.slx", {"options_r2020a.m"}, {}},
+        TestModel{"pid_options.yaml", "pid_options.mdl", {}, {"pid_options.m"}, {}}),
     [](const ::testing::TestParamInfo<TestModel>& test) {
       return test.param.expected.substr(0, test.param.expected.find('.'));
     });

@@ -450,16 +450,7 @@ class Importer final : public ImportModel {
         refuse(verdict);
         return;
       }
-      std::string read = inport ? outputs[0] : std::string{};
-      if (typed) {
-        read = signals.unique(name + "_read");
-        blocks.push_back({.name = names.unique(name + "_as_" + declared->second),
-                          .type = "Convert",
-                          .parameters = {{"type", declared->second}},
-                          .inputs = {{"u", read}},
-                          .outputs = {{"y", outputs[0]}},
-                          .source = block_path + " (Inport " + port + "): its type, " + declared->second});
-      }
+      const std::string read = typed ? signals.unique(name + "_read") : inport ? outputs[0] : std::string{};
       // The model's interface: on its own the plant's resources inport:NAME and outport:NAME, referenced by another
       // model (a Subsystem with model: FILE) bound to that model's signals.
       const std::string unique = names.unique(name);
@@ -470,6 +461,14 @@ class Importer final : public ImportModel {
         made.inputs = {{"u", inputs[0]}};
       made.source = block_path + " (" + block.type + " " + port + ")";
       blocks.push_back(std::move(made));
+      if (typed) {
+        blocks.push_back({.name = names.unique(name + "_as_" + declared->second),
+                          .type = "Convert",
+                          .parameters = {{"type", declared->second}},
+                          .inputs = {{"u", read}},
+                          .outputs = {{"y", outputs[0]}},
+                          .source = block_path + " (Inport " + port + "): its type, " + declared->second});
+      }
       verdict.imported = true;
       verdict.what =
           std::string{inport ? "Inport (on its own the plant's inport:" : "Outport (on its own the plant's outport:"} +
