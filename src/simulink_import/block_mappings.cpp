@@ -34,6 +34,21 @@ bool inherits_type(ImportContext& context) {
   return false;
 }
 
+// Whether a logic block's output is a boolean, as duet's Logic, Not, Compare and Relational give: its OutDataTypeStr
+// boolean, or the default "Inherit: Logical" (a boolean where the model implements logic signals as booleans, the
+// default). Another type (uint8, a fixed-point type) holds the same 0 and 1, but arithmetic after it would not be
+// duet's boolean arithmetic: refused.
+bool boolean_output(ImportContext& context) {
+  const auto found = context.block().parameters.find("OutDataTypeStr");
+  if (found == context.block().parameters.end() || found->second == "boolean" ||
+      found->second.starts_with("Inherit: Logical"))
+    return true;
+  context.refuse("OutDataTypeStr '" + found->second +
+                 "': duet's logic blocks output booleans (set it to boolean, or convert after it with a "
+                 "DataTypeConversion block)");
+  return false;
+}
+
 // A block of one input u and one output y, its parameters given, at its SampleTime when it has one.
 void unary(ImportContext& context, const std::string& type, TextPairs parameters, bool sampled,
            const std::string& what) {
@@ -287,7 +302,7 @@ void switch_block(ImportContext& context) {
 
 void logic(ImportContext& context) {
   const auto operation = context.raw("Operator");
-  if (!operation) return;
+  if (!operation || !boolean_output(context)) return;
   if (*operation == "NOT") {
     unary(context, "Not", {}, false, "Not");
     return;
@@ -334,7 +349,7 @@ void min_max(ImportContext& context) {
 void compare_to_constant(ImportContext& context) {
   const auto relop = context.raw("relop");
   const auto constant_value = context.parameter("const");
-  if (!relop || !constant_value) return;
+  if (!relop || !constant_value || !boolean_output(context)) return;
   const std::string operation = *relop == "~=" ? "!=" : *relop;
   unary(context, "Compare", {{"operator", quoted(operation)}, {"value", *constant_value}}, false,
         "Compare " + operation + " " + *constant_value);
@@ -630,7 +645,7 @@ void delay(ImportContext& context) {
 
 void relational(ImportContext& context) {
   const auto operation = context.raw("Operator");
-  if (!operation) return;
+  if (!operation || !boolean_output(context)) return;
   static const std::map<std::string, std::string, std::less<>> operators{{"==", "=="}, {"~=", "!="}, {"<", "<"},
                                                                          {"<=", "<="}, {">", ">"},   {">=", ">="}};
   const auto found = operators.find(*operation);

@@ -434,6 +434,9 @@ INSTANTIATE_TEST_SUITE_P(
                     "m/X (Sum): Inputs '2e26' is not a whole number from 1 to 64"},
         Unsupported{"commented", around(block_x("Gain", {{"Commented", "on"}})),
                     "m/X (Gain): commented out (on): refused, uncomment or delete it"},
+        Unsupported{"logic_of_uint8", around(block_x("RelationalOperator", {{"OutDataTypeStr", "uint8"}})),
+                    "m/X (RelationalOperator): OutDataTypeStr 'uint8': duet's logic blocks output booleans (set it "
+                    "to boolean, or convert after it with a DataTypeConversion block)"},
         Unsupported{"nxor", around(block_x("Logic", {{"Operator", "NXOR"}})),
                     "m/X (Logic): Operator NXOR is not one of duet's Logic (AND, OR, XOR, NAND, NOR, NOT)"},
         Unsupported{"one_input_logic", around(block_x("Logic", {{"Operator", "OR"}, {"Inputs", "1"}})),
