@@ -2,6 +2,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <ostream>
@@ -75,7 +76,20 @@ ExitCode import_simulink(const ImportCommandOptions& options, Streams streams) {
   if (!file) return fail("cannot write " + options.output);
   file.close();
   // The result is a model like any other: checked as `duet model check` checks it.
-  if (!load_checked_model(options.output, streams.err)) return fail(options.output + " does not check (above)");
+  const auto checked = load_checked_model(options.output, streams.err);
+  if (!checked) return fail(options.output + " does not check (above)");
+  // What only the checked model's types can refuse.
+  const model::Program& program = checked->program;
+  const auto problems = simulink::integer_problems(result, [&program](const std::string& path) {
+    for (const model::ProgramBlock& block : program.blocks)
+      if (block.path == path && !block.outputs.empty()) return model::describe(program.signals[block.outputs[0]].type);
+    return std::string{};
+  });
+  if (!problems.empty()) {
+    for (const std::string& problem : problems) streams.err << prefix << problem << '\n';
+    std::filesystem::remove(options.output);
+    return fail("nothing written: " + std::to_string(problems.size()) + " problem(s)");
+  }
   streams.out << "imported " << model.value().name << " (" << model.value().format << ") as " << options.output << '\n';
   return ExitCode::success;
 }

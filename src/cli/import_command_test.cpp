@@ -78,6 +78,36 @@ TEST(ImportCommand, WithoutItsVariablesNothingIsWrittenAndEveryProblemIsSaid) {
                                      "unresolved name 'Kp'\n"));
 }
 
+// A Sum of int16 signals that saturates in Simulink imports block by block, but the checked model shows its type:
+// duet's Sum wraps, so the import is refused and its file removed.
+TEST(ImportCommand, IntegersThatSimulinkSaturatesAreRefusedOnceTheModelIsChecked) {
+  auto folder = TemporaryFolder::make("import_command_test_").value();
+  const std::filesystem::path mdl = folder.path() / "ints.mdl";
+  std::ofstream{mdl} << "Model {\n  Name \"ints\"\n  System {\n    Name \"ints\"\n"
+                        "    Block {\n      BlockType Inport\n      Name \"u\"\n      SID \"1\"\n    }\n"
+                        "    Block {\n      BlockType DataTypeConversion\n      Name \"to int16\"\n      SID \"2\"\n"
+                        "      OutDataTypeStr \"int16\"\n      RndMeth \"Zero\"\n"
+                        "      SaturateOnIntegerOverflow on\n    }\n"
+                        "    Block {\n      BlockType Sum\n      Name \"twice\"\n      SID \"3\"\n"
+                        "      Inputs \"++\"\n      SaturateOnIntegerOverflow on\n    }\n"
+                        "    Block {\n      BlockType Outport\n      Name \"y\"\n      SID \"4\"\n    }\n"
+                        "    Line {\n      SrcBlock \"u\"\n      SrcPort 1\n      DstBlock \"to int16\"\n"
+                        "      DstPort 1\n    }\n"
+                        "    Line {\n      SrcBlock \"to int16\"\n      SrcPort 1\n"
+                        "      Branch {\n        DstBlock \"twice\"\n        DstPort 1\n      }\n"
+                        "      Branch {\n        DstBlock \"twice\"\n        DstPort 2\n      }\n    }\n"
+                        "    Line {\n      SrcBlock \"twice\"\n      SrcPort 1\n      DstBlock \"y\"\n"
+                        "      DstPort 1\n    }\n  }\n}\n";
+  const std::string output = (folder.path() / "ints.yaml").string();
+  const Outcome outcome = run({"import", "simulink", mdl.string(), "--base-period-us", "1000", "-o", output});
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err,
+            "duet import simulink: ints/twice (Sum): it computes in int16: Simulink saturates an integer overflow "
+            "(SaturateOnIntegerOverflow on), duet's Sum wraps (set it off in Simulink, or compute in floating point)\n"
+            "duet import simulink: nothing written: 1 problem(s)\n");
+  EXPECT_FALSE(std::filesystem::exists(output));
+}
+
 TEST(ImportCommand, BadCommandLines) {
   const Outcome interrupt =
       run({"import", "simulink", (testing / "controller.mdl").string(), "-o", "x.yaml", "--interrupt", "model/ISR"});

@@ -214,6 +214,21 @@ void abs(ImportContext& context) {
 }
 void sign(ImportContext& context) { unary(context, "Sign", {}, false, "Sign"); }
 
+// A mapping of a block with SaturateOnIntegerOverflow, whose duet block wraps an integer overflow (Gain, Sum, Product)
+// or saturates it (Abs). Where Simulink's block does the other, the two agree in floating point only; the import has
+// no types, so it says so and the checked model refuses an integer type there (integer_problems).
+template <BlockMapping map, bool duet_saturates>
+void on_integer_overflow(ImportContext& context) {
+  map(context);
+  if (context.refused() || context.emitted().empty()) return;
+  const auto saturates = context.raw("SaturateOnIntegerOverflow");
+  if (!saturates || (*saturates == "on") == duet_saturates) return;
+  context.floating_only(std::string{"Simulink "} + (duet_saturates ? "wraps" : "saturates") +
+                        " an integer overflow (SaturateOnIntegerOverflow " + *saturates + "), duet's " +
+                        context.emitted().back().type + (duet_saturates ? " saturates" : " wraps") + " (set it " +
+                        (duet_saturates ? "on" : "off") + " in Simulink, or compute in floating point)");
+}
+
 void saturation(ImportContext& context) {
   if (!inherits_type(context)) return;
   for (const char* source : {"UpperLimitSource", "LowerLimitSource"}) {
@@ -823,10 +838,10 @@ void selector(ImportContext& context) {
 BlockMapping mapping_for(const std::string& type) {
   static const std::map<std::string, BlockMapping, std::less<>> mappings{
       {"Constant", constant},
-      {"Gain", gain},
-      {"Sum", sum},
-      {"Product", product},
-      {"Abs", abs},
+      {"Gain", on_integer_overflow<gain, false>},
+      {"Sum", on_integer_overflow<sum, false>},
+      {"Product", on_integer_overflow<product, false>},
+      {"Abs", on_integer_overflow<abs, true>},
       {"Signum", sign},
       {"Saturate", saturation},
       {"UnitDelay", unit_delay},

@@ -17,12 +17,13 @@ struct DuetBlock {
   std::string name;
   std::string type;
   TextPairs parameters;
-  TextPairs inputs;     // port -> signal
-  TextPairs outputs;    // port -> signal
-  std::string period;   // "period_us: 10000", or empty (inherited)
-  std::string trigger;  // a subsystem's "{edge: rising, signal: x}" or "{interrupt: TIM2, priority: 3}", or empty
-  std::string enable;   // a subsystem's enabling signal, or empty
-  std::string source;   // the Simulink block it comes from: "tilt_loop/Scale/times k (Gain)"
+  TextPairs inputs;           // port -> signal
+  TextPairs outputs;          // port -> signal
+  std::string period;         // "period_us: 10000", or empty (inherited)
+  std::string trigger;        // a subsystem's "{edge: rising, signal: x}" or "{interrupt: TIM2, priority: 3}", or empty
+  std::string enable;         // a subsystem's enabling signal, or empty
+  std::string source;         // the Simulink block it comes from: "tilt_loop/Scale/times k (Gain)"
+  std::string floating_only;  // why it must compute in floating point, where integers would differ; not written
   std::vector<DuetBlock> blocks;  // a subsystem's
 };
 

@@ -132,8 +132,20 @@ class Importer final : public ImportModel {
 
  private:
   ImportResult finish() {
-    if (result_.problems.empty()) result_.model_text = duet_model_text(duet_);
+    if (result_.problems.empty()) {
+      result_.model_text = duet_model_text(duet_);
+      collect_floating_only(duet_.blocks, "");
+    }
     return std::move(result_);
+  }
+
+  void collect_floating_only(const std::vector<DuetBlock>& blocks, const std::string& prefix) {
+    for (const DuetBlock& block : blocks) {
+      if (!block.floating_only.empty())
+        result_.floating_only.push_back(
+            {.block = prefix + block.name, .source = block.source, .why = block.floating_only});
+      collect_floating_only(block.blocks, prefix + block.name + "/");
+    }
   }
 
   void problem(const std::string& text) { result_.problems.push_back(text); }
@@ -628,6 +640,17 @@ class Importer final : public ImportModel {
 
 ImportResult import_simulink(const SimulinkModel& model, const ImportOptions& options) {
   return Importer{model, options}.run();
+}
+
+std::vector<std::string> integer_problems(const ImportResult& result,
+                                          const std::function<std::string(const std::string& block)>& output_type) {
+  std::vector<std::string> problems;
+  for (const FloatingOnly& each : result.floating_only) {
+    const std::string type = output_type(each.block);
+    if (type.starts_with("int") || type.starts_with("uint"))
+      problems.push_back(each.source + ": it computes in " + type + ": " + each.why);
+  }
+  return problems;
 }
 
 }  // namespace duet::simulink_import

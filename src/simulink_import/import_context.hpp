@@ -85,6 +85,10 @@ class ImportContext {
   // The duet block's name and source comment filled in from the Simulink block; a mapping may emit several.
   void emit(DuetBlock block, const std::string& what);
   void refuse(const std::string& reason);
+  // The block emitted last computes as the Simulink block only in floating point, for `why`.
+  void floating_only(const std::string& why) {
+    if (!emitted_.empty()) emitted_.back().floating_only = why;
+  }
   // What the block became, for the report, where its blocks were emitted without saying.
   void emit_note(const std::string& what) { what_ += (what_.empty() ? "" : "; ") + what; }
 

@@ -573,5 +573,43 @@ TEST(Import, AnAlgebraicLoopIsFoundWhenTheModelIsChecked) {
   EXPECT_THAT(model::format("m.yaml", build.diagnostics.front()), HasSubstr("algebraic loop")) << result.model_text;
 }
 
+// u converted to `type`, then X: a Sum of it and itself (its SaturateOnIntegerOverflow as given), in a file of
+// `release`; the problems integer_problems finds in the checked model.
+std::vector<std::string> integer_problems_of_sum(const std::string& type, const std::string& release,
+                                                 std::map<std::string, std::string> sum_parameters) {
+  sum_parameters["Inputs"] = "++";
+  SimulinkModel model = around(block_x("Sum", std::move(sum_parameters)));
+  model.release = release;
+  model.root.blocks.push_back({.type = "DataTypeConversion",
+                               .name = "c",
+                               .sid = "4",
+                               .parameters = {{"OutDataTypeStr", type}, {"RndMeth", "Zero"}}});
+  model.root.lines[0].destinations = {{"c", "in", 1}};
+  model.root.lines.push_back({.name = {}, .source = Endpoint{"c", "out", 1}, .destinations = {{"X", "in", 1}}});
+  model.root.lines.back().destinations.push_back({"X", "in", 2});
+  const ImportResult result = import_simulink(model, {});
+  EXPECT_TRUE(result.problems.empty()) << ::testing::PrintToString(result.problems);
+  auto parsed = model::parse_model(result.model_text, "m.yaml");
+  EXPECT_TRUE(parsed) << (parsed ? "" : parsed.error());
+  if (!parsed) return {"not parsed"};
+  const model::ProgramBuild build = model::build_program(parsed.value());
+  EXPECT_TRUE(build.program) << result.model_text;
+  if (!build.program) return {"not checked"};
+  return integer_problems(result, output_type_in(*build.program));
+}
+
+// Simulink saturates an integer overflow where SaturateOnIntegerOverflow is on (the default before R2020a); duet's
+// Sum wraps. The import cannot see types; once the model is checked, a Sum that computes in integers is refused.
+TEST(Import, ASumThatSaturatesIntegersIsRefusedOnceTheCheckedModelShowsItsType) {
+  EXPECT_EQ(integer_problems_of_sum("int16", "R2019b", {}),
+            std::vector<std::string>{"m/X (Sum): it computes in int16: Simulink saturates an integer overflow "
+                                     "(SaturateOnIntegerOverflow on), duet's Sum wraps (set it off in Simulink, or "
+                                     "compute in floating point)"});
+  EXPECT_EQ(integer_problems_of_sum("int16", "R2019b", {{"SaturateOnIntegerOverflow", "off"}}),
+            std::vector<std::string>{});                                                  // both wrap
+  EXPECT_EQ(integer_problems_of_sum("int16", "R2022b", {}), std::vector<std::string>{});  // off by default since R2020a
+  EXPECT_EQ(integer_problems_of_sum("single", "R2019b", {}), std::vector<std::string>{});  // no overflow to saturate
+}
+
 }  // namespace
 }  // namespace duet::simulink_import

@@ -62,6 +62,15 @@ inline const Verdict& verdict(const ImportResult& result, const std::string& pat
   return none;
 }
 
+// A duet block's output type in `program`, as integer_problems asks for it.
+inline std::function<std::string(const std::string&)> output_type_in(const model::Program& program) {
+  return [&program](const std::string& path) {
+    for (const model::ProgramBlock& block : program.blocks)
+      if (block.path == path && !block.outputs.empty()) return model::describe(program.signals[block.outputs[0]].type);
+    return std::string{};
+  };
+}
+
 // The imported model as duet checks it, or the test fails with the diagnostics and the text.
 inline std::optional<model::ProgramBuild> checked(const ImportResult& imported, std::unique_ptr<model::Model>& keep) {
   EXPECT_TRUE(imported.problems.empty()) << ::testing::PrintToString(imported.problems);
@@ -73,6 +82,7 @@ inline std::optional<model::ProgramBuild> checked(const ImportResult& imported, 
   for (const model::Diagnostic& diagnostic : build.diagnostics)
     ADD_FAILURE() << model::format("imported.yaml", diagnostic) << "\n" << imported.model_text;
   if (!build.program) return std::nullopt;
+  EXPECT_EQ(integer_problems(imported, output_type_in(*build.program)), std::vector<std::string>{});
   return build;
 }
 

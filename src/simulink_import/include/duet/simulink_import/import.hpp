@@ -5,6 +5,7 @@
 // path, the reason and what to do; the report lists every block with its verdict either way.
 
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -35,12 +36,26 @@ struct Verdict {
   std::string what;  // "Gain k: 2.5", or why it is refused and what to do
 };
 
+// A duet block that computes as its Simulink block only in floating point: for integers the two differ (Simulink
+// saturates an overflow where duet's Sum wraps). The import has no types; the checked model has.
+struct FloatingOnly {
+  std::string block;   // the duet block's path: "gain", "controller/sum"
+  std::string source;  // the Simulink block's path and type: "m/Sub/Add (Sum)"
+  std::string why;     // "Simulink saturates an integer overflow (SaturateOnIntegerOverflow on), duet's Sum wraps ..."
+};
+
 struct ImportResult {
   std::string model_text;  // the duet model file; empty when anything was refused
   std::vector<Verdict> report;
   std::vector<std::string> problems;  // every refusal and model-wide problem, each naming its place
+  std::vector<FloatingOnly> floating_only;
 };
 
 [[nodiscard]] ImportResult import_simulink(const SimulinkModel& model, const ImportOptions& options);
+
+// What `result`'s floating-only blocks refuse once the model is checked: one problem for each that computes in an
+// integer type. `output_type` gives a duet block's output type as the checked model has it ("int16", "double[3]").
+[[nodiscard]] std::vector<std::string> integer_problems(
+    const ImportResult& result, const std::function<std::string(const std::string& block)>& output_type);
 
 }  // namespace duet::simulink_import
