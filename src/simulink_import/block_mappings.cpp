@@ -392,10 +392,18 @@ bool pid_types_inherited(ImportContext& context) {
 }
 
 // The Discrete PID Controller (a library link, SourceType "PID 1dof"), for the options duet's DiscretePid has.
+// Whether the parameter evaluates to 0 (`0`, `0.0`, a variable holding 0); refuses with `what` otherwise.
+bool zero(ImportContext& context, const std::string& name, const std::string& what) {
+  const auto value = context.scalar(name);
+  if (!value) return false;
+  if (*value == 0) return true;
+  context.refuse(name + " is " + yaml_number(*value) + ": " + what);
+  return false;
+}
+
 void pid(ImportContext& context) {
   if (!context.require("TimeDomain", "Discrete-time", "a continuous-time PID is not discrete") ||
       !context.require("Form", "Parallel", "duet's DiscretePid is the parallel form") ||
-      !context.require("IntegratorMethod", "Forward Euler", "duet's DiscretePid integrates by forward Euler") ||
       !context.require("ControllerParametersSource", "internal", "gains from ports: not imported yet") ||
       !context.require("ExternalReset", "none", "an external reset is not imported yet") ||
       !context.require("InitialConditionSource", "internal", "the initial conditions must be the block's own") ||
@@ -418,11 +426,12 @@ void pid(ImportContext& context) {
   if (!p) return;
   parameters.emplace_back("p", *p);
   if (has_i) {
-    if (!absent_or(context, "UseKiTs", "off", "the integral gain given as I*Ts is not imported") ||
+    if (!context.require("IntegratorMethod", "Forward Euler", "duet's DiscretePid integrates by forward Euler") ||
+        !absent_or(context, "UseKiTs", "off", "the integral gain given as I*Ts is not imported") ||
         !absent_or(context, "LimitIntegrator", "off", "duet's DiscretePid does not limit its integrator"))
       return;
     const auto i = context.parameter("I");
-    if (!i || !context.require("InitialConditionForIntegrator", "0", "duet's integrator starts at 0")) return;
+    if (!i || !zero(context, "InitialConditionForIntegrator", "duet's integrator starts at 0")) return;
     parameters.emplace_back("i", *i);
   } else {
     parameters.emplace_back("i", "0");
@@ -431,7 +440,7 @@ void pid(ImportContext& context) {
     const auto d = context.parameter("D");
     if (!d || !context.require("UseFilter", "on", "duet's derivative is always filtered") ||
         !context.require("FilterMethod", "Forward Euler", "duet's derivative filter is forward Euler") ||
-        !context.require("InitialConditionForFilter", "0", "duet's filter starts at 0") ||
+        !zero(context, "InitialConditionForFilter", "duet's filter starts at 0") ||
         !absent_or(context, "UseExternalDerivativeSource", "off", "a derivative from a port is not imported"))
       return;
     const auto n = context.parameter("N");

@@ -294,8 +294,8 @@ TEST(Import, RefusesWhatItCannotProveEqualAndSaysWhereAndWhy) {
   const ImportResult without_variables = import_simulink(model, {});
   ASSERT_FALSE(without_variables.problems.empty());
   EXPECT_EQ(without_variables.problems[0],
-            "pid_loop/Discrete PID Controller (PID 1dof): its parameter IntegratorMethod is not in the file, and "
-            "duet knows no default for it");  // a library link's values are all in the file, or it is damaged
+            "pid_loop/Discrete PID Controller (PID 1dof): its parameter ControllerParametersSource is not in the "
+            "file, and duet knows no default for it");  // a library link's values are all in the file, or it is damaged
   EXPECT_TRUE(without_variables.model_text.empty());
   EXPECT_FALSE(verdict(without_variables, "pid_loop/Discrete PID Controller").imported);
   EXPECT_TRUE(verdict(without_variables, "pid_loop/Limiter/Saturation").imported);
@@ -366,6 +366,20 @@ SimulinkModel triggered_by_u(Block x) {
   SimulinkModel model = around(std::move(x));
   model.root.lines[0].destinations.push_back({"X", "trigger", 1});
   return model;
+}
+
+// What an option means is what counts, not how it is written: initial conditions of 0 written as 0.0 or as a
+// variable holding 0, and a P or PD controller's integrator method (it has no integrator).
+TEST(Import, APidsOptionsCountByTheirMeaning) {
+  ImportOptions options;
+  options.variables["x0"] = Value::scalar(0);
+  const ImportResult written_otherwise = import_simulink(
+      around(pid_x({{"InitialConditionForIntegrator", "0.0"}, {"InitialConditionForFilter", "x0"}})), options);
+  EXPECT_TRUE(written_otherwise.problems.empty()) << ::testing::PrintToString(written_otherwise.problems);
+  const ImportResult without_integrator =
+      import_simulink(around(pid_x({{"Controller", "PD"}, {"IntegratorMethod", "Backward Euler"}})), {});
+  EXPECT_TRUE(without_integrator.problems.empty()) << ::testing::PrintToString(without_integrator.problems);
+  EXPECT_EQ(verdict(without_integrator, "m/X").what, "DiscretePid (PD)");
 }
 
 struct Unsupported {
@@ -475,7 +489,7 @@ INSTANTIATE_TEST_SUITE_P(
         Unsupported{"pid_unfiltered", around(pid_x({{"UseFilter", "off"}})),
                     "m/X (PID 1dof): UseFilter is 'off': duet's derivative is always filtered"},
         Unsupported{"pid_integrator_initial", around(pid_x({{"InitialConditionForIntegrator", "1"}})),
-                    "m/X (PID 1dof): InitialConditionForIntegrator is '1': duet's integrator starts at 0"},
+                    "m/X (PID 1dof): InitialConditionForIntegrator is 1: duet's integrator starts at 0"},
         Unsupported{"pid_back_calculation", around(pid_x({{"AntiWindupMode", "back-calculation"}})),
                     "m/X (PID 1dof): AntiWindupMode back-calculation: duet's DiscretePid clamps or does nothing"},
         Unsupported{"pid_typed", around(pid_x({{"SumOutDataTypeStr", "single"}})),
