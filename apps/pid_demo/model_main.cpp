@@ -200,7 +200,7 @@ void step_1ms() {
   const float x_next1 = a_x1 + (c.b[1][0] * duty + c.b[1][1] * c.disturbance);
   count = count >= 4999U ? 0U : count + 1U;
   filter = filter + period_s * derivative;
-  integrator = integrator + c.ki * period_s * error;
+  integrator = integrator + period_s * (c.ki * error);
   x[0] = x_next0;
   x[1] = x_next1;
   // For the supervision.
