@@ -29,6 +29,7 @@
 #include "duet/model/simulation.hpp"
 #include "duet/model/simulation_plant.hpp"
 #include "duet/plant/plant.hpp"
+#include "duet/support/number_text.hpp"
 #include "sil_run.hpp"
 #include "sil_xcp.hpp"
 
@@ -59,12 +60,12 @@ int fail(const std::string& message) {
 }
 
 std::string summary(const Options& options, const sil::SilResult& result, std::uint64_t late_ticks) {
-  using duet::model::format_number;
+  using duet::shortest_text;
   std::string text = "balbot_sil: " + std::to_string(result.ticks) + " ticks (" +
                      (options.real_time ? "real time, " + std::to_string(late_ticks) + " late" : "lock-step") + ", " +
                      (options.plant.empty() ? "plant at " + options.link : "plant " + options.plant + " in process") +
-                     "); final theta " + format_number(result.final_theta_deg) + " deg; largest |theta| after 4 s ";
-  text += result.largest_theta_after_4_s_deg ? format_number(*result.largest_theta_after_4_s_deg) + " deg" : "none";
+                     "); final theta " + shortest_text(result.final_theta_deg) + " deg; largest |theta| after 4 s ";
+  text += result.largest_theta_after_4_s_deg ? shortest_text(*result.largest_theta_after_4_s_deg) + " deg" : "none";
   if (!options.csv.empty()) text += "; wrote " + options.csv;
   return text;
 }

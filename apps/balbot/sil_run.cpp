@@ -12,6 +12,7 @@
 #include "duet/host/lock_step_port.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/rt/executive.hpp"
+#include "duet/support/number_text.hpp"
 #include "duet/support/text_file.hpp"
 
 namespace duet::sil {
@@ -87,8 +88,7 @@ Result<SilResult> run_sil(plant::Plant& plant, const SilOptions& options) {
     }
     if (options.check) {
       if (auto checked = options.check(); !checked) {
-        failure =
-            Failure{"at " + model::format_number(now) + " s (tick " + std::to_string(tick) + "): " + checked.error()};
+        failure = Failure{"at " + shortest_text(now) + " s (tick " + std::to_string(tick) + "): " + checked.error()};
         break;
       }
     }

@@ -19,6 +19,7 @@
 #include "duet/model/simulation.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/plot/figure.hpp"
+#include "duet/support/number_text.hpp"
 #include "plant_choice.hpp"
 
 namespace duet::cli {
@@ -122,7 +123,7 @@ ExitCode run_sim(const SimOptions& options, Streams streams) {
   if (!csv.empty() && !write_file(csv, model::to_csv(recording), streams)) return ExitCode::failure;
   if (!options.mdf.empty()) {
     const auto now = std::chrono::system_clock::now().time_since_epoch();
-    const std::string group = "base period " + model::format_number(checked->model->base_period_us) + " us";
+    const std::string group = "base period " + shortest_text(checked->model->base_period_us) + " us";
     const Status written = mdf4_recording::write_recording_file(
         options.mdf, recording,
         {.group = group,

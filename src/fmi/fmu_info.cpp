@@ -3,22 +3,17 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <ostream>
 #include <set>
 
 #include "duet/fmi/archive.hpp"
 #include "duet/fmi/fmu_contents.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::fmi {
 namespace {
 
-std::string number_text(const std::optional<double>& value) {
-  if (!value) return "-";
-  std::array<char, 32> text{};
-  return {text.data(), std::to_chars(text.data(), text.data() + text.size(), *value).ptr};
-}
+std::string number_text(const std::optional<double>& value) { return value ? shortest_text(*value) : "-"; }
 
 std::string yes_no(bool value) { return value ? "yes" : "no"; }
 

@@ -2,9 +2,9 @@
 
 #include <pugixml.hpp>
 
-#include <array>
-#include <charconv>
 #include <sstream>
+
+#include "duet/support/number_text.hpp"
 
 namespace duet::fmi {
 namespace {
@@ -14,12 +14,6 @@ struct Unwritable {
 };
 
 // The shortest text that reads back as the same double.
-std::string number_text(double value) {
-  std::array<char, 32> text{};
-  const auto end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
-  return {text.data(), end};
-}
-
 void set(pugi::xml_node node, const char* attribute, std::string_view value) {
   node.append_attribute(attribute).set_value(std::string{value}.c_str());
 }
@@ -27,7 +21,7 @@ void set_if(pugi::xml_node node, const char* attribute, bool value) {
   if (value) set(node, attribute, "true");
 }
 void set_if(pugi::xml_node node, const char* attribute, const std::optional<double>& value) {
-  if (value) set(node, attribute, number_text(*value));
+  if (value) set(node, attribute, shortest_text(*value));
 }
 void set_if(pugi::xml_node node, const char* attribute, const std::string& value) {
   if (!value.empty()) set(node, attribute, value);

@@ -7,6 +7,7 @@
 
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
+#include "duet/support/number_text.hpp"
 #include "duet/version.hpp"
 
 namespace duet::fmu_export {
@@ -44,7 +45,7 @@ VariableType fmi_type(DataType type, fmi::FmiVersion version) {
 
 std::string start_text(DataType type, double value) {
   if (type == DataType::boolean) return value != 0 ? "true" : "false";
-  return model::format_number(value);
+  return shortest_text(value);
 }
 
 std::string element_name(const std::string& name, std::size_t element, std::size_t count) {

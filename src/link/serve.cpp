@@ -1,7 +1,5 @@
 #include "duet/link/serve.hpp"
 
-#include <array>
-#include <charconv>
 #include <memory>
 #include <optional>
 #include <string>
@@ -10,6 +8,7 @@
 #include "duet/blocks/convert.hpp"
 #include "duet/link/channel.hpp"
 #include "duet/link/pacer.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::link {
 namespace {
@@ -26,13 +25,6 @@ auto with_element_type(ElementType type, Run&& run) {
     case ElementType::f64: break;
   }
   return run(double{});
-}
-
-// A time as the shortest text that reads back as the same double ("0.05").
-std::string shortest(double value) {
-  std::array<char, 32> text{};
-  char* const end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
-  return std::string(text.data(), end);
 }
 
 // One firmware's session: a handler per kind of frame the firmware may send.
@@ -149,7 +141,7 @@ class Server {
   // The plant cannot go on (an imported FMU that failed or asked to stop): the firmware is told with ERROR, the only
   // ending a plant can give a tick. A failure fails the session; a request to stop ends it, kept in the summary.
   Status halted(const plant::Plant::Halt& halt, double time_s) {
-    const std::string at = "at t = " + shortest(time_s) + " s: " + halt.reason;
+    const std::string at = "at t = " + shortest_text(time_s) + " s: " + halt.reason;
     if (halt.failed) return channel_.fail("the plant failed " + at);
     summary_.plant_stop = "the plant asked to stop " + at;
     (void)channel_.fail(summary_.plant_stop);

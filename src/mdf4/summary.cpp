@@ -1,19 +1,13 @@
 #include "duet/mdf4/summary.hpp"
 
-#include <charconv>
 #include <ctime>
 #include <sstream>
 
+#include "duet/support/number_text.hpp"
 #include "format.hpp"
 
 namespace duet::mdf4 {
 namespace {
-
-std::string number_text(double value) {
-  char text[32];
-  auto* const end = std::to_chars(text, text + sizeof text, value).ptr;
-  return {text, end};
-}
 
 std::string utc_text(std::uint64_t nanoseconds) {
   const auto seconds = static_cast<std::time_t>(nanoseconds / 1'000'000'000);
@@ -41,7 +35,7 @@ std::string conversion_text(const Conversion& conversion) {
   switch (conversion.kind) {
     case Conversion::Kind::identity: return "";
     case Conversion::Kind::linear:
-      return ", physical = " + number_text(conversion.factor) + " * stored + " + number_text(conversion.offset);
+      return ", physical = " + shortest_text(conversion.factor) + " * stored + " + shortest_text(conversion.offset);
     case Conversion::Kind::value_to_text: return ", " + std::to_string(conversion.texts.size()) + " value texts";
     case Conversion::Kind::unsupported:
       return ", conversion type " + std::to_string(conversion.cc_type) + " (not applied)";
@@ -83,7 +77,7 @@ Result<std::string> summarise(const Reader& reader) {
     if (!span) return Failure{span.error()};
     if (span.value()) {
       const std::string unit = group.channels[*group.master].unit;
-      out << ", " << number_text(span.value()->first) << " to " << number_text(span.value()->second)
+      out << ", " << shortest_text(span.value()->first) << " to " << shortest_text(span.value()->second)
           << (unit.empty() ? "" : " " + unit);
     }
     if (!group.comment.empty()) out << " (" << group.comment << ')';

@@ -5,6 +5,7 @@
 #include "duet/mdf4/writer.hpp"
 #include "duet/mdf4_recording/typed_values.hpp"
 #include "duet/model/data_type.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::mdf4_recording {
 namespace {
@@ -57,8 +58,8 @@ Status write_recording_file(const std::filesystem::path& path, const model::Reco
     for (std::size_t column = 0; column < values.size(); ++column) {
       auto value = typed_value(recording.columns[column][row], column_types[column]);
       if (!value) {
-        return Failure{path.string() + ": " + recording.names[column] + " at " +
-                       model::format_number(recording.time_s[row]) + " s: " + value.error()};
+        return Failure{path.string() + ": " + recording.names[column] + " at " + shortest_text(recording.time_s[row]) +
+                       " s: " + value.error()};
       }
       values[column] = value.value();
     }

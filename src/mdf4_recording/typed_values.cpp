@@ -8,6 +8,7 @@
 
 #include "duet/mdf4/exact_value.hpp"
 #include "duet/model/data_type.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::mdf4_recording {
 namespace {
@@ -36,12 +37,12 @@ mdf4::ValueType value_type(model::DataType type) {
 Result<mdf4::Value> typed_value(double value, mdf4::ValueType type) {
   if (type == mdf4::ValueType::f32) {  // rounded, as a float signal's arithmetic rounds
     if (std::isfinite(value) && std::abs(value) > std::numeric_limits<float>::max())
-      return Failure{model::format_number(value) + " is no f32 value"};
+      return Failure{shortest_text(value) + " is no f32 value"};
     return mdf4::Value{static_cast<float>(value)};
   }
   std::optional<mdf4::Value> exact = mdf4::exactly(type, value);
   if (!exact)
-    return Failure{model::format_number(value) + " is no " + std::string{stored_names[static_cast<std::size_t>(type)]} +
+    return Failure{shortest_text(value) + " is no " + std::string{stored_names[static_cast<std::size_t>(type)]} +
                    " value"};
   return *exact;
 }

@@ -1,6 +1,5 @@
 #include "duet/model/data_type.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -53,12 +52,6 @@ bool fits(double value, DataType type) {
   const TypeFacts range = facts(type);
   if (!std::isfinite(value) || value < range.lowest || value > range.highest) return false;
   return is_floating(type) || value == std::trunc(value);
-}
-
-std::string format_number(double value) {
-  char text[32];
-  const auto written = std::to_chars(std::begin(text), std::end(text), value);
-  return {std::begin(text), written.ptr};
 }
 
 }  // namespace duet::model

@@ -12,6 +12,7 @@
 #include "duet/model/simulation.hpp"
 #include "duet/model/task_set_file.hpp"
 #include "duet/support/content_hash.hpp"
+#include "duet/support/number_text.hpp"
 #include "duet/version.hpp"
 #include "duet/xcp/host/a2l.hpp"
 #include "duet/xcp/slave.hpp"
@@ -580,8 +581,8 @@ class FileWriter {
     std::string list;
     for (const Parameter& parameter : program_.model->parameters) {
       if (!parameter.minimum || !parameter.maximum || parameter.value.elements.size() != 1) continue;
-      list += "inline constexpr Limits " + parameter.name + "{" + format_number(*parameter.minimum) + ", " +
-              format_number(*parameter.maximum) + "};\n";
+      list += "inline constexpr Limits " + parameter.name + "{" + shortest_text(*parameter.minimum) + ", " +
+              shortest_text(*parameter.maximum) + "};\n";
     }
     if (list.empty()) return {};
     return "// The parameters' limits (min and max in the model, the A2L's LowerLimit and UpperLimit).\n"

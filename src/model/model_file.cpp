@@ -14,6 +14,7 @@
 
 #include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
+#include "duet/support/number_text.hpp"
 #include "duet/support/text_file.hpp"
 #include "model_reference.hpp"
 
@@ -488,7 +489,7 @@ Model model(const YAML::Node& root, const std::string& file) {
         }
         for (double element : parameter.value.elements) {
           if (!fits(element, parameter.type)) {
-            fail(fields["value"], "parameter " + parameter.name + ": " + format_number(element) +
+            fail(fields["value"], "parameter " + parameter.name + ": " + shortest_text(element) +
                                       " is not a value of " + "its type " + std::string{type_name(parameter.type)});
           }
           if ((parameter.minimum && element < *parameter.minimum) ||

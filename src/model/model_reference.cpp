@@ -10,6 +10,7 @@
 #include "duet/model/data_type.hpp"
 #include "duet/model/diagnostic.hpp"
 #include "duet/support/closest_word.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::model {
 namespace {
@@ -126,8 +127,8 @@ class Expander {
     name_file(referenced, file);
     if (referenced.base_period_us != model_.base_period_us) {
       fail(block.model_location,
-           "the model '" + block.model + "' has base_period_us " + format_number(referenced.base_period_us) +
-               ", the referencing model " + format_number(model_.base_period_us),
+           "the model '" + block.model + "' has base_period_us " + shortest_text(referenced.base_period_us) +
+               ", the referencing model " + shortest_text(model_.base_period_us),
            "a reference runs at the referencing model's rates: give both the same base period");
     }
     join_definitions(block, referenced);

@@ -11,6 +11,7 @@
 #include "duet/model/data_type.hpp"
 #include "duet/model/interpreter.hpp"
 #include "duet/support/closest_word.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::model {
 namespace {
@@ -236,8 +237,8 @@ std::string to_csv(const Recording& recording) {
   for (const std::string& name : recording.names) text += "," + name;
   text += '\n';
   for (std::size_t row = 0; row < recording.time_s.size(); ++row) {
-    text += format_number(recording.time_s[row]);
-    for (const auto& column : recording.columns) text += "," + format_number(column[row]);
+    text += shortest_text(recording.time_s[row]);
+    for (const auto& column : recording.columns) text += "," + shortest_text(column[row]);
     text += '\n';
   }
   return text;

@@ -2,6 +2,7 @@
 
 #include "duet/model/data_type.hpp"
 #include "duet/model/simulation.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::model {
 
@@ -34,7 +35,7 @@ Result<std::string> task_set_file(const Program& program, const std::map<std::st
     if (!(longest > 0))
       return Failure{"section at ceiling " + std::to_string(ceiling) + ": times are microseconds above 0"};
     sections += std::string{sections.empty() ? "" : ", "} + "{ceiling: " + std::to_string(ceiling) +
-                ", longest_us: " + format_number(longest) + "}";
+                ", longest_us: " + shortest_text(longest) + "}";
   }
   text += "core: {priority_bits: 4, sub_priority_bits: 0" + (sections.empty() ? "" : ", sections: [" + sections + "]") +
           "}\ntasks:\n";
@@ -59,8 +60,8 @@ Result<std::string> task_set_file(const Program& program, const std::map<std::st
       period = interarrival->second;
       source = task.rate.interrupt;
     }
-    text += "  - {name: " + name + ", source: " + source + ", period_us: " + format_number(period) +
-            ", wcet_us: " + format_number(wcet->second) +
+    text += "  - {name: " + name + ", source: " + source + ", period_us: " + shortest_text(period) +
+            ", wcet_us: " + shortest_text(wcet->second) +
             ", priority: {group: " + std::to_string(priorities.value().priorities[index].group) + ", sub: 0}}\n";
   }
   return text;

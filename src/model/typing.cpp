@@ -8,6 +8,7 @@
 #include "block_semantics.hpp"
 #include "duet/model/data_type.hpp"
 #include "duet/support/closest_word.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::model {
 namespace {
@@ -567,7 +568,7 @@ class BlockCheck {
     for (const double element : value.elements) {
       if (!fits(element, type.type)) {
         error(where,
-              "type mismatch: " + what + " of " + name_ + " is " + format_number(element) +
+              "type mismatch: " + what + " of " + name_ + " is " + shortest_text(element) +
                   ", which is not a value of " + std::string{type_name(type.type)},
               "give a value of " + std::string{type_name(type.type)} + ", or declare another type");
         return;
@@ -595,7 +596,7 @@ class BlockCheck {
       const double last = ends[std::min(k, ends.size() - 1)];
       if (first <= last) continue;
       error(start->location,
-            "parameter 'start' of " + name_ + " is " + format_number(first) + ", above its end, " + format_number(last),
+            "parameter 'start' of " + name_ + " is " + shortest_text(first) + ", above its end, " + shortest_text(last),
             "the dead zone is start..end: give start <= end");
       return;
     }
@@ -617,8 +618,8 @@ class BlockCheck {
     for (std::size_t k = 1; k < at.size(); ++k) {
       if (at[k] > at[k - 1]) continue;
       error(breakpoints->location,
-            "parameter 'breakpoints' of " + name_ + " does not increase strictly: " + format_number(at[k]) +
-                " follows " + format_number(at[k - 1]),
+            "parameter 'breakpoints' of " + name_ + " does not increase strictly: " + shortest_text(at[k]) +
+                " follows " + shortest_text(at[k - 1]),
             "each breakpoint must be above the one before");
       return;
     }
@@ -691,7 +692,7 @@ class BlockCheck {
       for (const double element : argument.value.elements) {
         if (!fits(element, expected)) {
           error(argument.location,
-                "type mismatch: parameter '" + parameter_name + "' of " + name_ + " is " + format_number(element) +
+                "type mismatch: parameter '" + parameter_name + "' of " + name_ + " is " + shortest_text(element) +
                     ", which is not a value of " + std::string{type_name(expected)},
                 computes_in(expected) + ": give a value of that type" +
                     (block_.inputs.empty() ? std::string{", or another type"} : ", or convert the input"));

@@ -1,9 +1,9 @@
 #include "duet_text.hpp"
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
+
+#include "duet/support/number_text.hpp"
 
 namespace duet::simulink_import {
 namespace {
@@ -43,9 +43,7 @@ void write_block(const DuetBlock& block, const std::string& indent, std::string&
 std::string yaml_number(double value) {
   if (std::isinf(value)) return value > 0 ? ".inf" : "-.inf";
   if (std::isnan(value)) return ".nan";
-  std::array<char, 32> text{};
-  char* const end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
-  return std::string(text.data(), end);
+  return shortest_text(value);
 }
 
 std::string yaml_value(const Value& value) {

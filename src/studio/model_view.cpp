@@ -9,6 +9,7 @@
 #include "duet/model/model_file.hpp"
 #include "duet/model/signal_names.hpp"
 #include "duet/model/task_set_file.hpp"
+#include "duet/support/number_text.hpp"
 
 namespace duet::studio {
 namespace {
@@ -76,7 +77,7 @@ class Lines {
 };
 
 std::string value_text(const model::Value& value) {
-  auto element = [&](std::size_t index) { return model::format_number(value.elements[index]); };
+  auto element = [&](std::size_t index) { return shortest_text(value.elements[index]); };
   if (value.shape.empty() && value.elements.size() == 1) return element(0);
   std::string text = "[";
   if (value.shape.size() == 2) {

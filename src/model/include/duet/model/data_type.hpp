@@ -21,7 +21,4 @@ namespace duet::model {
 // Whether the type holds `value` exactly (a float holds any finite double within its range, rounded).
 [[nodiscard]] bool fits(double value, DataType type);
 
-// The shortest text that reads back as the same double.
-[[nodiscard]] std::string format_number(double value);
-
 }  // namespace duet::model
