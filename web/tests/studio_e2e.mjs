@@ -15,7 +15,7 @@
 //   sil       (with --sil) the same against the firmware built for the PC (balbot_sil --xcp, in real time).
 //   reference src/studio/testing/reference/loop.yaml, whose referenced controller.yaml has problems of its own:
 //             those listed with their file and outlined on their block inside the reference, none on the open text;
-//             a click on one opens the reference at its block and leaves the text alone.
+//             a click on one opens the reference at its block and leaves the text alone; its block not deletable here.
 // Every model is a copy in a folder of its own. Screenshots go to --artefacts. Prints one JSON line of results and
 // exits 1 naming the failed step.
 // Usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware balbot-pil.elf]
@@ -376,6 +376,13 @@ async function reference() {
   const after = await page.evaluate(() => window.duetStudio.editor.selection());
   if (JSON.stringify(before) !== JSON.stringify(after)) throw new Error(`the text's selection moved from ${JSON.stringify(before)} to ${JSON.stringify(after)}`);
   await page.screenshot({ path: path.join(options.artefacts, 'studio-reference.png') });
+  step = 'reference: its block selected selects no text, and deleting it is refused, naming its file';
+  const unedited = await text(page);
+  await page.click('g.block[data-id="controller/limit"]', { force: true });
+  if (JSON.stringify(await page.evaluate(() => window.duetStudio.editor.selection())) !== JSON.stringify(after)) throw new Error('selecting the block selected text');
+  await page.keyboard.press('Delete');
+  await page.waitForFunction(() => /delete controller\/limit: that is in controller\.yaml/.test(document.getElementById('edit-message').textContent), null, { timeout: 3000 });
+  if ((await text(page)) !== unedited) throw new Error('the text changed');
   step = 'reference: a click on the open file\'s problem goes to its line';
   await page.click('#problems .problem >> nth=1');
   const line = await page.evaluate(() => {
