@@ -131,3 +131,39 @@ TEST(ModelCommandCode, ACodeBlockWithItsHeaderBesideTheModel) {
 
 }  // namespace
 }  // namespace duet::cli
+
+namespace duet::cli {
+namespace {
+
+// A problem in a referenced model is at its place in that file, not in the file checked.
+TEST(ModelCommandReference, CheckNamesTheFileOfEachProblem) {
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("duet_model_reference_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::ofstream{folder / "controller.yaml"} << "duet_model: 1\nname: c\nbase_period_us: 100\nparameters:\n  Kd: 1\n"
+                                               "blocks:\n  - {name: theta, type: Inport, outputs: {y: theta}}\n"
+                                               "  - {name: limit, type: Saturation, parameters: {lower: -1, upper: 1},"
+                                               " inputs: {u: thetta}, outputs: {y: duty}}\n"
+                                               "  - {name: duty, type: Outport, inputs: {u: duty}}\n";
+  std::ofstream{folder / "top.yaml"} << "duet_model: 1\nname: top\nbase_period_us: 100\nblocks:\n"
+                                        "  - {name: one, type: Constant, parameters: {value: 1}, outputs: {y: n}}\n"
+                                        "  - {name: c, type: Subsystem, model: controller.yaml, inputs: {theta: n},"
+                                        " outputs: {duty: d}}\n"
+                                        "  - {name: pin, type: GpioOut, parameters: {pin: PA5}, inputs: {u: state}}\n";
+  const std::string top = (folder / "top.yaml").string();
+  const std::string controller = (folder / "controller.yaml").string();
+  const Outcome outcome = run({"model", "check", top});
+  std::filesystem::remove_all(folder);
+  EXPECT_EQ(outcome.exit_code, ExitCode::failure);
+  EXPECT_EQ(outcome.err, controller +
+                             ":8:81: error: input 'u' of block 'limit' reads signal 'thetta', which nothing drives "
+                             "(did you mean 'theta'?)\n" +
+                             top +
+                             ":7:65: error: input 'u' of block 'pin' reads signal 'state', which nothing drives "
+                             "(an output of a block, or of the subsystem's inputs, must drive it)\n" +
+                             controller +
+                             ":5:3: warning: parameter 'Kd' is not used (remove it, or use it in a block)\n");
+}
+
+}  // namespace
+}  // namespace duet::cli

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <filesystem>
 #include <map>
+#include <optional>
 
 #include "duet/model/block_types.hpp"
 #include "duet/model/data_type.hpp"
@@ -10,6 +12,7 @@
 #include "duet/model/signal_names.hpp"
 #include "duet/model/task_set_file.hpp"
 #include "duet/support/number_text.hpp"
+#include "duet/support/text_file.hpp"
 
 namespace duet::studio {
 namespace {
@@ -19,8 +22,9 @@ using model::Connection;
 using model::Location;
 using nlohmann::json;
 
-// The reader stops at its first problem and says it as `file:line:column: error: what (hint)`.
-model::Diagnostic parse_problem(const std::string& text) {
+// The reader stops at its first problem and says it as `file:line:column: error: what (hint)`; the file is another
+// than `model_file` when the problem is in a referenced model.
+model::Diagnostic parse_problem(const std::string& text, const std::string& model_file) {
   model::Diagnostic diagnostic;
   diagnostic.message = text;
   for (const char* marker : {": error: ", ": warning: "}) {
@@ -37,22 +41,59 @@ model::Diagnostic parse_problem(const std::string& text) {
         std::from_chars(column_text, text.data() + at, column).ec != std::errc{}) {
       continue;
     }
-    diagnostic.location = {line, column};
+    const std::string file = text.substr(0, line_colon);
+    diagnostic.location = {line, column, file == model_file ? std::string{} : file};
     diagnostic.message = text.substr(at + std::string_view{marker}.size());
     break;
   }
-  if (diagnostic.location.line == 0) diagnostic.location = {1, 1};  // a problem of the whole file
+  if (diagnostic.location.line == 0) diagnostic.location = {1, 1, {}};  // a problem of the whole file
   return diagnostic;
 }
 
-// The text's lines, for the lines each block spans.
+// Where a place is, for the page: its line and column, and the file when it is not the open model's (a referenced
+// model's blocks, parameters and diagnostics), by its path from the model's folder as the page names files.
+class Places {
+ public:
+  explicit Places(const std::string& model_file)
+      : folder_(std::filesystem::path{model_file}.parent_path()),
+        model_name_(std::filesystem::path{model_file}.filename().generic_string()) {}
+
+  // Empty for the open model's own places.
+  [[nodiscard]] std::string file_of(const Location& location) const {
+    if (location.file.empty()) return {};
+    const std::filesystem::path file{location.file};
+    const std::filesystem::path relative = folder_.empty() ? file : file.lexically_relative(folder_);
+    return (relative.empty() ? file : relative).generic_string();
+  }
+
+  // A diagnostic names its file always: the open model's is the name the page was given (`studio`'s `file`).
+  [[nodiscard]] std::string diagnostic_file(const Location& location) const {
+    return location.file.empty() ? model_name_ : file_of(location);
+  }
+
+  [[nodiscard]] json json_of(const Location& location) const {
+    json place = {{"line", location.line}, {"column", location.column}};
+    if (!location.file.empty()) place["file"] = file_of(location);
+    return place;
+  }
+
+ private:
+  std::filesystem::path folder_;
+  std::string model_name_;
+};
+
+// How far each line of a text is indented, for the lines each block spans; blank and comment lines are none.
 class Lines {
  public:
   explicit Lines(std::string_view text) {
     std::size_t start = 0;
     while (start <= text.size()) {
       const auto end = text.find('\n', start);
-      lines_.push_back(text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start));
+      const std::string_view line =
+          text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
+      const auto indentation = line.find_first_not_of(' ');
+      const bool content = indentation != std::string_view::npos && line[indentation] != '#';
+      indentations_.push_back(content ? std::optional<std::size_t>{indentation} : std::nullopt);
       if (end == std::string_view::npos) break;
       start = end + 1;
     }
@@ -62,18 +103,37 @@ class Lines {
   // keys belong to it; blank and comment lines only where more of it follows.
   [[nodiscard]] int block_end(Location start) const {
     int last = start.line;
-    for (int line = start.line + 1; line <= static_cast<int>(lines_.size()); ++line) {
-      const std::string_view text = lines_[static_cast<std::size_t>(line - 1)];
-      const auto indentation = text.find_first_not_of(' ');
-      if (indentation == std::string_view::npos || text[indentation] == '#') continue;
-      if (static_cast<int>(indentation) < start.column - 1) break;
+    for (int line = start.line + 1; line <= static_cast<int>(indentations_.size()); ++line) {
+      const auto indentation = indentations_[static_cast<std::size_t>(line - 1)];
+      if (!indentation) continue;
+      if (static_cast<int>(*indentation) < start.column - 1) break;
       last = line;
     }
     return last;
   }
 
  private:
-  std::vector<std::string_view> lines_;
+  std::vector<std::optional<std::size_t>> indentations_;
+};
+
+// The lines of the open text, and of each referenced model's file, read when a block of it is first drawn.
+class SourceLines {
+ public:
+  explicit SourceLines(std::string_view text) : own_(text) {}
+
+  [[nodiscard]] int block_end(const Location& start) {
+    if (start.file.empty()) return own_.block_end(start);
+    auto found = referenced_.find(start.file);
+    if (found == referenced_.end()) {
+      const auto text = read_text_file(start.file);  // the reader has just read it; gone since, the block is one line
+      found = referenced_.emplace(start.file, Lines{text ? std::string_view{text.value()} : std::string_view{}}).first;
+    }
+    return found->second.block_end(start);
+  }
+
+ private:
+  Lines own_;
+  std::map<std::string, Lines> referenced_;
 };
 
 std::string value_text(const model::Value& value) {
@@ -93,8 +153,6 @@ std::string value_text(const model::Value& value) {
   }
   return text + "]";
 }
-
-json location_json(Location location) { return {{"line", location.line}, {"column", location.column}}; }
 
 // The highest N among the connections to ports named LETTER + N (u1, u2, ... or y1, y2, ...); 0 for none.
 int highest_numbered(const std::vector<Connection>& connections, char letter) {
@@ -120,7 +178,11 @@ std::vector<std::string> numbered(char letter, int count) {
 class DiagramBuilder {
  public:
   DiagramBuilder(const CheckedText& checked, std::string_view text)
-      : model_(*checked.model), program_(checked.program ? &*checked.program : nullptr), lines_(text), names_(model_) {
+      : model_(*checked.model),
+        program_(checked.program ? &*checked.program : nullptr),
+        places_(checked.file),
+        lines_(text),
+        names_(model_) {
     if (program_ == nullptr) return;
     for (const model::ProgramBlock& block : program_->blocks) {
       if (block.task == model::at_initialisation) {
@@ -141,7 +203,7 @@ class DiagramBuilder {
                     {"description", parameter.description},
                     {"min", parameter.minimum ? json(*parameter.minimum) : json()},
                     {"max", parameter.maximum ? json(*parameter.maximum) : json()}};
-      entry.update(location_json(parameter.location));
+      entry.update(places_.json_of(parameter.location));
       parameters.push_back(std::move(entry));
     }
     return {{"name", model_.name},
@@ -187,14 +249,13 @@ class DiagramBuilder {
     json entry = {{"id", id},
                   {"name", block.name},
                   {"type", block.type},
-                  {"line", block.location.line},
-                  {"column", block.location.column},
                   {"end_line", lines_.block_end(block.location)},
                   {"task", task_of(block, id)},
                   {"period", period_json(block.period)},
                   {"inputs", ports(block, true)},
                   {"outputs", ports(block, false)},
                   {"parameters", arguments(block)}};
+    entry.update(places_.json_of(block.location));
     if (block.type == "Subsystem") entry["system"] = system(block.blocks, id, &block);
     if (block.trigger.kind != model::Trigger::Kind::none) {
       const model::Trigger& trigger = block.trigger;
@@ -204,7 +265,7 @@ class DiagramBuilder {
                           {"priority", trigger.priority ? json(*trigger.priority) : json()},
                           {"edge", interrupt ? json() : json(trigger.edge)},
                           {"signal", interrupt ? json() : json(trigger.signal)}};
-      entry["trigger"].update(location_json(trigger.location));
+      entry["trigger"].update(places_.json_of(trigger.location));
     }
     if (!block.enable.empty()) entry["enable"] = block.enable;
     if (block.code) entry["code"] = {{"function", block.code->function}, {"file", block.code->file}};
@@ -247,7 +308,7 @@ class DiagramBuilder {
   // (at least two), a Demux's up to the highest connected one and one more to connect (of its eight), a subsystem's
   // or Code block's as written; a connection to a port the type lacks is drawn too, so that the checker's error about
   // it has something to sit on.
-  static json ports(const Block& block, bool inputs) {
+  [[nodiscard]] json ports(const Block& block, bool inputs) const {
     const std::vector<Connection>& connections = inputs ? block.inputs : block.outputs;
     std::vector<std::string> names;
     const model::BlockType* type = model::find_block_type(block.type);
@@ -274,7 +335,7 @@ class DiagramBuilder {
       json port = {{"port", name}, {"kind", "data"}};
       if (connected != connections.end()) {
         port["signal"] = connected->signal;
-        port.update(location_json(connected->location));
+        port.update(places_.json_of(connected->location));
       } else {
         port["signal"] = nullptr;
       }
@@ -282,12 +343,12 @@ class DiagramBuilder {
     }
     if (inputs && block.trigger.kind == model::Trigger::Kind::edge) {
       json port = {{"port", "trigger"}, {"kind", "trigger"}, {"signal", block.trigger.signal}};
-      port.update(location_json(block.trigger.location));
+      port.update(places_.json_of(block.trigger.location));
       result.push_back(std::move(port));
     }
     if (inputs && !block.enable.empty()) {
       json port = {{"port", "enable"}, {"kind", "enable"}, {"signal", block.enable}};
-      port.update(location_json(block.location));
+      port.update(places_.json_of(block.location));
       result.push_back(std::move(port));
     }
     return result;
@@ -304,7 +365,7 @@ class DiagramBuilder {
                     {"text", parameter.text},
                     {"reference", parameter.reference.empty() ? json() : json(parameter.reference)},
                     {"tunable", tunable}};
-      entry.update(location_json(parameter.location));
+      entry.update(places_.json_of(parameter.location));
       result.push_back(std::move(entry));
     }
     return result;
@@ -381,13 +442,14 @@ class DiagramBuilder {
         }
       }
     }
-    entry.update(location_json(location));
+    entry.update(places_.json_of(location));
     return entry;
   }
 
   const model::Model& model_;
   const model::Program* program_;
-  Lines lines_;
+  Places places_;
+  SourceLines lines_;
   model::SignalNames names_;
   std::map<std::string, json> tasks_;  // block path -> task index or "constant"
 };
@@ -415,22 +477,28 @@ json tasks_json(const model::Program& program) {
 
 namespace {
 
-// The innermost block whose lines hold `location`, by id.
-void find_block(const json& system, Location location, std::string& found) {
+// The innermost block whose lines in `file` (empty: the open model's) hold `line`, by id; empty when none does. A
+// referenced model's blocks lie inside their reference's subsystem but in their own file, so every system is searched.
+std::string find_block(const json& system, const std::string& file, int line) {
   for (const json& block : system["blocks"]) {
-    if (location.line < block["line"].get<int>() || location.line > block["end_line"].get<int>()) continue;
-    found = block["id"].get<std::string>();
-    if (block.contains("system")) find_block(block["system"], location, found);
+    if (block.contains("system")) {
+      std::string inner = find_block(block["system"], file, line);
+      if (!inner.empty()) return inner;
+    }
+    if (block.value("file", "") == file && line >= block["line"].get<int>() && line <= block["end_line"].get<int>())
+      return block["id"].get<std::string>();
   }
+  return {};
 }
 
 }  // namespace
 
 CheckedText check_text(std::string_view text, const std::string& file) {
   CheckedText checked;
+  checked.file = file;
   auto model = model::parse_model(text, file);
   if (!model) {
-    checked.diagnostics.push_back(parse_problem(model.error()));
+    checked.diagnostics.push_back(parse_problem(model.error(), file));
     return checked;
   }
   checked.model = std::make_unique<model::Model>(std::move(model).value());
@@ -446,16 +514,18 @@ json model_view(const CheckedText& checked, std::string_view text) {
                {"diagram", nullptr},
                {"tasks", checked.program ? tasks_json(*checked.program) : json::array()}};
   if (checked.model) view["diagram"] = DiagramBuilder{checked, text}.diagram();
+  const Places places{checked.file};
   for (const model::Diagnostic& diagnostic : checked.diagnostics) {
     json entry = {{"severity", diagnostic.severity == model::Diagnostic::Severity::error ? "error" : "warning"},
+                  {"file", places.diagnostic_file(diagnostic.location)},
                   {"line", diagnostic.location.line},
                   {"column", diagnostic.location.column},
                   {"message", diagnostic.message},
                   {"hint", diagnostic.hint},
                   {"block", nullptr}};
     if (!view["diagram"].is_null()) {
-      std::string block;
-      find_block(view["diagram"]["root"], diagnostic.location, block);
+      const std::string block =
+          find_block(view["diagram"]["root"], places.file_of(diagnostic.location), diagnostic.location.line);
       if (!block.empty()) entry["block"] = block;
     }
     view["diagnostics"].push_back(std::move(entry));

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <thread>
+#include <vector>
 
 #include "duet/support/content_hash.hpp"
 #include "duet/support/text_file.hpp"
@@ -22,14 +23,18 @@ namespace fs = std::filesystem;
 
 class StudioTest : public ::testing::Test {
  protected:
+  // The model the server opens, first, and the files beside it, from the source tree.
+  [[nodiscard]] virtual std::vector<fs::path> files() const {
+    return {"apps/pid_demo/pid_demo.yaml", "apps/pid_demo/motor_logic.hpp"};
+  }
+
   void SetUp() override {
     folder = fs::temp_directory_path() / ("duet_studio_test_" + std::to_string(::getpid()) + "_" +
                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(folder);
     fs::create_directories(folder);
-    model = folder / "pid_demo.yaml";
-    fs::copy_file(fs::path{DUET_SOURCE_DIR} / "apps/pid_demo/pid_demo.yaml", model);
-    fs::copy_file(fs::path{DUET_SOURCE_DIR} / "apps/pid_demo/motor_logic.hpp", folder / "motor_logic.hpp");
+    for (const fs::path& file : files()) fs::copy_file(fs::path{DUET_SOURCE_DIR} / file, folder / file.filename());
+    model = folder / files().front().filename();
     original = read_text_file(model.string()).value();
     StudioOptions options;  // member by member: GCC 12 at -O3 takes braced nested options for read before written
     options.model = model;
@@ -177,6 +182,61 @@ TEST_F(StudioTest, AnswersBadRequestsWithErrorsAndReachesNoFileOutsideTheModelsF
   EXPECT_NE((*error)["message"].get<std::string>().find("not connected"), std::string::npos);
   client.send_text("not json");
   EXPECT_TRUE(client.next("error"));
+}
+
+// A model that references another (testing/reference): each file has problems of its own.
+class StudioReferenceTest : public StudioTest {
+ protected:
+  [[nodiscard]] std::vector<fs::path> files() const override {
+    return {"src/studio/testing/reference/loop.yaml", "src/studio/testing/reference/controller.yaml"};
+  }
+};
+
+TEST_F(StudioReferenceTest, NamesTheFileOfEachDiagnosticAndTiesItToItsBlockThere) {
+  WebSocketClient client{studio->port()};
+  const auto checked = client.next("model");
+  ASSERT_TRUE(checked);
+  // Line 18 of loop.yaml is block spare's and line 7 block error's: the referenced file's places are not there.
+  EXPECT_EQ((*checked)["diagnostics"], json::parse(R"([
+    {"severity": "error", "file": "controller.yaml", "line": 18, "column": 14, "block": "controller/limit",
+     "message": "input 'u' of block 'limit' reads signal 'pp', which nothing drives", "hint": "did you mean 'p'?"},
+    {"severity": "error", "file": "loop.yaml", "line": 17, "column": 14, "block": "spare",
+     "message": "input 'u' of block 'spare' reads signal 'nowhere', which nothing drives",
+     "hint": "an output of a block, or of the subsystem's inputs, must drive it"},
+    {"severity": "warning", "file": "controller.yaml", "line": 7, "column": 3, "block": null,
+     "message": "parameter 'Kd' is not used", "hint": "remove it, or use it in a block"}])"))
+      << (*checked)["diagnostics"].dump(2);
+  // The reference's blocks are drawn inside it at their lines in their own file; the open file's name none.
+  const json& blocks = (*checked)["diagram"]["root"]["blocks"];
+  const json& controller = blocks[2];
+  ASSERT_EQ(controller["id"], "controller");
+  EXPECT_FALSE(controller.contains("file"));
+  EXPECT_EQ(controller["line"], 8);
+  const json& limit = controller["system"]["blocks"][1];
+  ASSERT_EQ(limit["id"], "controller/limit");
+  EXPECT_EQ(limit["file"], "controller.yaml");
+  EXPECT_EQ(limit["line"], 15);
+  EXPECT_EQ(limit["end_line"], 19);
+  EXPECT_EQ(limit["inputs"][0]["file"], "controller.yaml");
+  EXPECT_EQ(limit["inputs"][0]["line"], 18);
+}
+
+TEST_F(StudioReferenceTest, AReferencedModelThatDoesNotReadIsAProblemInItsFile) {
+  std::string broken = read_text_file((folder / "controller.yaml").string()).value();
+  broken.replace(broken.find("{name: duty, type: Outport, inputs: {u: duty}}"), 47, "{name: duty, type: Outport}");
+  std::ofstream{folder / "broken.yaml"} << broken;
+  std::string text = original;
+  text.replace(text.find("controller.yaml"), 15, "broken.yaml");
+  WebSocketClient client{studio->port()};
+  client.send({{"type", "check"}, {"text", text}, {"seq", 1}});
+  auto checked = client.next("model");
+  while (checked && (*checked)["seq"] != 1) checked = client.next("model");
+  ASSERT_TRUE(checked);
+  EXPECT_TRUE((*checked)["diagram"].is_null());
+  EXPECT_EQ((*checked)["diagnostics"], json::parse(R"json([
+    {"severity": "error", "file": "broken.yaml", "line": 20, "column": 5, "block": null,
+     "message": "Outport 'duty' reads no signal (connect it: inputs: {u: SIGNAL})", "hint": ""}])json"))
+      << (*checked)["diagnostics"].dump(2);
 }
 
 }  // namespace

@@ -13,10 +13,13 @@
 //             theta's value changes on its wire, P written on its block and read back, the refresh rate of the
 //             live values with the whole top level visible, a wire scoped.
 //   sil       (with --sil) the same against the firmware built for the PC (balbot_sil --xcp, in real time).
+//   reference src/studio/testing/reference/loop.yaml, whose referenced controller.yaml has problems of its own:
+//             those listed with their file and outlined on their block inside the reference, none on the open text;
+//             a click on one opens the reference at its block and leaves the text alone; its block not deletable here.
 // Every model is a copy in a folder of its own. Screenshots go to --artefacts. Prints one JSON line of results and
 // exits 1 naming the failed step.
 // Usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware balbot-pil.elf]
-//        [--sil balbot_sil] [--steps robot,gold,roundtrip,simulate,external,sil]
+//        [--sil balbot_sil] [--steps robot,gold,roundtrip,simulate,external,sil,reference]
 import { execFile } from 'node:child_process';
 import { existsSync } from 'node:fs';
 import { mkdir, mkdtemp, readdir, readFile, rm } from 'node:fs/promises';
@@ -27,7 +30,7 @@ import { chromium_path, launchChromium, parseOptions, waitFor } from './browser.
 import { checkLatencies, dragPort, measureLiveRefresh, median, StudioSessions } from './studio_session.mjs';
 
 const usage = 'usage: node studio_e2e.mjs --duet DUET --root SOURCE_DIR --artefacts DIR [--firmware ELF] [--sil PROGRAM] [--steps LIST]';
-const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', sil: '', steps: 'robot,gold,roundtrip,simulate,external,sil' }, usage);
+const options = parseOptions(process.argv.slice(2), { duet: '', root: '', artefacts: '', firmware: '', sil: '', steps: 'robot,gold,roundtrip,simulate,external,sil,reference' }, usage);
 if (!options.duet || !options.root || !options.artefacts) {
   console.error(usage);
   process.exit(2);
@@ -347,6 +350,51 @@ async function externalMode(target, name, screenshot) {
   return found;
 }
 
+// A model whose reference's file has an error and a warning, and its own file an error (duet_studio_test checks the
+// server's diagnostics exactly; here, what the page makes of them).
+async function reference() {
+  const model = await copyModel('src/studio/testing/reference/loop.yaml');
+  const session = await studio(model);
+  const { page } = session;
+  step = 'reference: each problem listed with its file when it is not the open one';
+  await page.click('[data-bottom-tab="problems"]');
+  const places = await page.$$eval('#problems .problem .place', (nodes) => nodes.map((node) => node.textContent));
+  const expected = ['controller.yaml:18:14', '17:14', 'controller.yaml:7:3'];
+  if (JSON.stringify(places) !== JSON.stringify(expected)) throw new Error(`Problems lists ${JSON.stringify(places)}, not ${JSON.stringify(expected)}`);
+  step = 'reference: only the open file\'s problem on its text';
+  const marked = await page.$$eval('.cm-lintRange-error, .cm-lintRange-warning', (nodes) => nodes.map((node) => node.textContent));
+  // spare's `u: nowhere` on line 17; the text's line 18 (controller.yaml's error's) and 7 (its warning's) unmarked.
+  if (JSON.stringify(marked) !== JSON.stringify(['u'])) throw new Error(`the text marks ${JSON.stringify(marked)}, not only spare's input u`);
+  step = 'reference: the referenced file\'s error outlines the reference, not the block at its line here';
+  await page.waitForSelector('g.block.marker-error[data-id="controller"]');
+  if (await page.locator('g.block[data-id="error"].marker-warning, g.block[data-id="error"].marker-error').count()) throw new Error('block error (line 7 of loop.yaml) is marked');
+  step = 'reference: a click on its problem opens the reference at its block, the text left alone';
+  const before = await page.evaluate(() => window.duetStudio.editor.selection());
+  await page.click('#problems .problem >> nth=0');
+  await waitFor('the reference opened', 5000, async () => (await currentSystem(page)) === 'controller');
+  await page.waitForSelector('g.block.selected.marker-error[data-id="controller/limit"]', { timeout: 3000 });
+  const after = await page.evaluate(() => window.duetStudio.editor.selection());
+  if (JSON.stringify(before) !== JSON.stringify(after)) throw new Error(`the text's selection moved from ${JSON.stringify(before)} to ${JSON.stringify(after)}`);
+  await page.screenshot({ path: path.join(options.artefacts, 'studio-reference.png') });
+  step = 'reference: its block selected selects no text, and deleting it is refused, naming its file';
+  const unedited = await text(page);
+  await page.click('g.block[data-id="controller/limit"]', { force: true });
+  if (JSON.stringify(await page.evaluate(() => window.duetStudio.editor.selection())) !== JSON.stringify(after)) throw new Error('selecting the block selected text');
+  await page.keyboard.press('Delete');
+  await page.waitForFunction(() => /delete controller\/limit: that is in controller\.yaml/.test(document.getElementById('edit-message').textContent), null, { timeout: 3000 });
+  if ((await text(page)) !== unedited) throw new Error('the text changed');
+  step = 'reference: a click on the open file\'s problem goes to its line';
+  await page.click('#problems .problem >> nth=1');
+  const line = await page.evaluate(() => {
+    const { from } = window.duetStudio.editor.selection();
+    return window.duetStudio.editor.getText().slice(0, from).split('\n').length;
+  });
+  if (line !== 17) throw new Error(`the cursor went to line ${line}, not 17`);
+  if (session.errors.length) throw new Error(`script errors: ${session.errors.join('; ')}`);
+  await session.close();
+  results.reference = { places, marked };
+}
+
 // What it needs and a build may lack: said as "skipped: ..." (ctest's skip pattern).
 function skip(reason) {
   console.log(`skipped: ${reason}`);
@@ -362,7 +410,7 @@ try {
   work = await mkdtemp(path.join(tmpdir(), 'duet-studio-e2e-'));
   browser = await launchChromium();
   sessions = new StudioSessions({ duet: options.duet, root: options.root, work, browser });
-  for (const [name, body] of Object.entries({ robot, gold, roundtrip, simulate, external, sil })) {
+  for (const [name, body] of Object.entries({ robot, gold, roundtrip, simulate, external, sil, reference })) {
     if (!steps.has(name)) continue;
     step = name;
     await body();

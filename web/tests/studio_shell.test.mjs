@@ -3,7 +3,7 @@ import assert from 'node:assert/strict';
 import { Text } from '@codemirror/state';
 import { CheckLoop } from '../src/studio/check_loop.js';
 import { blockAtLine, findWire, textRangeOf, wireAtCursor, wireSelection } from '../src/studio/selection_sync.js';
-import { blockMarkers, checkSummary, lintDiagnostics, positionOf } from '../src/studio/diagnostics.js';
+import { blockMarkers, checkSummary, inOpenFile, lintDiagnostics, placeText, positionOf } from '../src/studio/diagnostics.js';
 import { defaultValue, modelValueProblem, parameterProblem } from '../src/studio/parameter_rules.js';
 import { lineSeparatorOf } from '../src/studio/editor.js';
 
@@ -138,6 +138,57 @@ test('diagnostics: at their line and column, underlining the word; markers per b
   assert.deepEqual(checkSummary([]), { text: 'checked', state: 'ok' });
   assert.deepEqual(checkSummary(diagnostics), { text: '2 errors, 1 warning', state: 'error' });
   assert.deepEqual(checkSummary([diagnostics[1]]), { text: 'checked, 1 warning', state: 'warning' });
+});
+
+// A model reference: the subsystem `c` takes its blocks from controller.yaml, whose places the
+// server names with their file; line 3 of controller.yaml is not line 3 of this text.
+const referencing = {
+  root: {
+    path: '',
+    blocks: [
+      {
+        id: 'c', name: 'c', type: 'Subsystem', line: 3, column: 5, end_line: 6,
+        inputs: [{ port: 'theta', signal: 'theta', line: 6, column: 14 }], outputs: [],
+        system: {
+          path: 'c',
+          blocks: [{ id: 'c/k', name: 'k', type: 'Gain', file: 'controller.yaml', line: 3, column: 5, end_line: 3, inputs: [{ port: 'u', signal: 'theta', file: 'controller.yaml', line: 3, column: 42 }], outputs: [] }],
+          wires: [{ id: 'c:theta', signal: 'theta', resolved: 'theta', file: 'controller.yaml', line: 3, column: 45, source: { system_input: 'theta' }, targets: [{ block: 'c/k', port: 'u' }] }],
+        },
+      },
+    ],
+    wires: [{ id: ':theta', signal: 'theta', resolved: 'theta', line: 1, column: 11, targets: [{ block: 'c', port: 'theta' }] }],
+  },
+};
+const referencingText = [
+  'signals: {theta: {unit: deg}}',
+  'blocks:',
+  '  - name: c',
+  '    type: Subsystem',
+  '    model: controller.yaml',
+  '    inputs: {theta: theta}',
+].join('\n');
+const referencingDoc = Text.of(referencingText.split('\n'));
+
+test('a referenced model\'s places: listed with their file, never looked for in the open text', () => {
+  const diagnostics = [
+    { severity: 'error', file: 'loop.yaml', line: 6, column: 21, message: 'own', block: 'c' },
+    { severity: 'error', file: 'controller.yaml', line: 3, column: 42, message: 'inside', block: 'c/k' },
+    { severity: 'warning', file: 'controller.yaml', line: 9, column: 3, message: 'unused', block: null },
+  ];
+  assert.deepEqual(diagnostics.map((d) => inOpenFile(d, 'loop.yaml')), [true, false, false]);
+  assert.ok(inOpenFile({ line: 1, column: 1 }, 'loop.yaml'), 'a diagnostic without a file is the open text\'s');
+  assert.deepEqual(diagnostics.map((d) => placeText(d, 'loop.yaml')), ['6:21', 'controller.yaml:3:42', 'controller.yaml:9:3']);
+  const lint = lintDiagnostics(referencingDoc, diagnostics, 'loop.yaml');
+  assert.equal(lint.length, 1, 'only the open text\'s own diagnostic is on the text');
+  assert.equal(referencingText.slice(lint[0].from, lint[0].to), 'theta');
+  assert.deepEqual([...blockMarkers(diagnostics).keys()], ['c', 'c/k'], 'both still mark their blocks');
+  // Line 3 of the text is the reference itself, not the block on line 3 of controller.yaml.
+  assert.equal(blockAtLine(referencing.root, 3).id, 'c');
+  assert.equal(textRangeOf(referencing, { kind: 'block', id: 'c/k' }, referencingDoc), null);
+  assert.equal(textRangeOf(referencing, { kind: 'wire', id: 'c:theta' }, referencingDoc), null);
+  const lineText = (n) => referencingDoc.line(n).text;
+  assert.equal(wireAtCursor(referencing, 3, 46, '  - {name: k, type: Gain, inputs: {u: theta}}'), null, 'a port of controller.yaml is not on this text');
+  assert.equal(wireAtCursor(referencing, 6, 23, lineText(6)).wire.id, ':theta');
 });
 
 test('parameter rules: required, choices, numbers with limits, names, model parameter values', () => {

@@ -1,15 +1,27 @@
 // The server's diagnostics as CodeMirror lint diagnostics (positions in the text) and as the
 // diagram's markers (per block). Pure: `doc` is CodeMirror's Text.
 
+// Whether a diagnostic's place is in the open text: a referenced model's are in their own file.
+export function inOpenFile(diagnostic, openFile) {
+  return !diagnostic.file || diagnostic.file === openFile;
+}
+
+// Where the Problems list says a diagnostic is: `12:5` in the open text, `controller.yaml:12:5` elsewhere.
+export function placeText(diagnostic, openFile) {
+  const place = `${diagnostic.line}:${diagnostic.column}`;
+  return inOpenFile(diagnostic, openFile) ? place : `${diagnostic.file}:${place}`;
+}
+
 export function positionOf(doc, line, column) {
   if (doc.lines === 0) return 0;
   const target = doc.line(Math.min(Math.max(line, 1), doc.lines));
   return target.from + Math.min(Math.max(column - 1, 0), target.length);
 }
 
-// Each diagnostic underlines the word at its place (at least one character, so it is visible).
-export function lintDiagnostics(doc, diagnostics) {
-  return diagnostics.map((diagnostic) => {
+// Each diagnostic of the open text underlines the word at its place (at least one character, so
+// it is visible); those of other files are not on this text.
+export function lintDiagnostics(doc, diagnostics, openFile) {
+  return diagnostics.filter((diagnostic) => inOpenFile(diagnostic, openFile)).map((diagnostic) => {
     const from = positionOf(doc, diagnostic.line ?? 1, diagnostic.column ?? 1);
     const line = doc.lineAt(from);
     const word = /^[^\s,{}[\]:]*/.exec(line.text.slice(from - line.from))[0].length;

@@ -7,11 +7,21 @@ import {
   setModelParameterValue, systemNames, yamlValue,
 } from './yaml_edit.js';
 import { defaultValue } from './parameter_rules.js';
-import { findBlock } from './selection_sync.js';
+import { findBlock, findSystem } from './selection_sync.js';
 
 export function createDiagramEdits({ editor, getDiagram, currentSystem, say }) {
-  // Runs one edit; returns its result, or undefined when it could not be made (and says why).
-  const attempt = (what, edit) => {
+  // A model reference's blocks, and the parameters its model brings, are in that model's file, not in this text.
+  const fileOfBlock = (id) => findBlock(getDiagram(), id)?.file;
+  const fileOfSystem = (path) => findSystem(getDiagram(), path)?.blocks?.find((block) => block.file)?.file;
+  const fileOfParameter = (name) => getDiagram()?.parameters?.find((parameter) => parameter.name === name)?.file;
+
+  // Runs one edit; returns its result, or undefined when it could not be made (and says why). `elsewhere`: the
+  // file of what it would change when that is not this text.
+  const attempt = (what, edit, elsewhere) => {
+    if (elsewhere) {
+      say(`${what}: that is in ${elsewhere}, not in this text: edit it there`, 'bad');
+      return undefined;
+    }
     try {
       const result = edit(editor.editText());
       editor.applyEdits(result.changes);
@@ -31,7 +41,7 @@ export function createDiagramEdits({ editor, getDiagram, currentSystem, say }) {
         const parameters = (entry.parameters ?? []).filter((spec) => spec.required).map((spec) => [spec.name, yamlValue(defaultValue(spec))]);
         const id = system ? `${system}/${name}` : name;
         return { changes: addBlock(text, system, { name, type: entry.type, parameters }), id, message: `added ${id}` };
-      })?.id;
+      }, fileOfSystem(system))?.id;
     },
 
     connect({ from, to }) {
@@ -40,11 +50,11 @@ export function createDiagramEdits({ editor, getDiagram, currentSystem, say }) {
       return attempt(`connect ${from.block}.${from.port} to ${to.block}.${to.port}`, (text) => {
         const result = connectPorts(text, { ...from, signal }, to);
         return { ...result, message: `${to.block}.${to.port} reads ${result.signal}` };
-      });
+      }, fileOfSystem(currentSystem()));
     },
 
     renameSignal(system, oldName, newName) {
-      return attempt(`rename ${oldName}`, (text) => ({ changes: renameSignal(text, system, oldName, newName), message: `renamed ${oldName} to ${newName}` }));
+      return attempt(`rename ${oldName}`, (text) => ({ changes: renameSignal(text, system, oldName, newName), message: `renamed ${oldName} to ${newName}` }), fileOfSystem(system));
     },
 
     // `typed` as the user wrote it; empty removes an optional parameter.
@@ -52,15 +62,15 @@ export function createDiagramEdits({ editor, getDiagram, currentSystem, say }) {
       return attempt(`set ${name}`, (text) => ({
         changes: typed.trim() === '' ? removeBlockParameter(text, blockId, name) : setBlockParameter(text, blockId, name, yamlValue(typed)),
         message: typed.trim() === '' ? `removed ${name} of ${blockId}` : `${name} of ${blockId} = ${typed.trim()}`,
-      }));
+      }), fileOfBlock(blockId));
     },
 
     setModelParameter(name, typed) {
-      return attempt(`set ${name}`, (text) => ({ changes: setModelParameterValue(text, name, yamlValue(typed)), message: `${name} = ${typed.trim()}` }));
+      return attempt(`set ${name}`, (text) => ({ changes: setModelParameterValue(text, name, yamlValue(typed)), message: `${name} = ${typed.trim()}` }), fileOfParameter(name));
     },
 
     deleteBlock(blockId) {
-      return attempt(`delete ${blockId}`, (text) => ({ changes: deleteBlock(text, blockId), message: `deleted ${blockId}` }));
+      return attempt(`delete ${blockId}`, (text) => ({ changes: deleteBlock(text, blockId), message: `deleted ${blockId}` }), fileOfBlock(blockId));
     },
   };
 }

@@ -10,7 +10,7 @@ import { createGeneratePanel } from './panels/generate_panel.js';
 import { createLivePanel } from './panels/live_panel.js';
 import { createEditor } from './editor.js';
 import { CheckLoop } from './check_loop.js';
-import { blockMarkers, checkSummary, lintDiagnostics, positionOf } from './diagnostics.js';
+import { blockMarkers, checkSummary, inOpenFile, lintDiagnostics, positionOf } from './diagnostics.js';
 import { blockAtLine, findBlock, systemOfBlock, textRangeOf, wireAtCursor, wireSelection } from './selection_sync.js';
 import { createDiagramEdits } from './diagram_edits.js';
 import { createPalette } from './palette.js';
@@ -90,8 +90,10 @@ const palette = createPalette(
 const blockForm = createBlockForm(byId('block-form'), { edits, getLivePanel: () => panels.live });
 const problems = createProblemsList(byId('problems'), byId('problem-count'), {
   onJump(diagnostic) {
-    const position = positionOf(editor.doc, diagnostic.line, diagnostic.column);
-    editor.select(position, position, { focus: true });
+    if (inOpenFile(diagnostic, studio.file)) {
+      const position = positionOf(editor.doc, diagnostic.line, diagnostic.column);
+      editor.select(position, position, { focus: true });
+    }
     if (diagnostic.block && findBlock(diagram, diagnostic.block)) showInDiagram({ kind: 'block', id: diagnostic.block }, systemOfBlock(diagnostic.block));
   },
 });
@@ -136,8 +138,8 @@ async function showModel(model) {
   lastModel = model;
   stats.lastModelSeq = model.seq;
   const diagnostics = model.diagnostics ?? [];
-  editor.setDiagnostics(lintDiagnostics(editor.doc, diagnostics));
-  problems.show(diagnostics);
+  editor.setDiagnostics(lintDiagnostics(editor.doc, diagnostics, studio.file));
+  problems.show(diagnostics, studio.file);
   const summary = checkSummary(diagnostics);
   if (!model.diagram) {
     // The text does not read as a model: keep the last drawing, dimmed, and say so.

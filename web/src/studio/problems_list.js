@@ -1,10 +1,11 @@
-// The Problems tab: every diagnostic with its place; a click jumps there in the text and selects
-// the block it concerns in the diagram.
+// The Problems tab: every diagnostic with its place (its file's name too when that is not the open
+// one); a click jumps there in the text and selects the block it concerns in the diagram.
 import { element, replaceChildren } from '../dom.js';
+import { placeText } from './diagnostics.js';
 
 export function createProblemsList(root, countNode, { onJump }) {
   return {
-    show(diagnostics) {
+    show(diagnostics, openFile) {
       countNode.textContent = diagnostics.length ? String(diagnostics.length) : '';
       countNode.dataset.state = diagnostics.some((d) => d.severity === 'error') ? 'error' : 'warning';
       if (diagnostics.length === 0) {
@@ -14,7 +15,7 @@ export function createProblemsList(root, countNode, { onJump }) {
       replaceChildren(root, element('ul', { class: 'problems' }, diagnostics.map((diagnostic) => element('li', {},
         element('button', { class: `problem ${diagnostic.severity}`, onclick: () => onJump(diagnostic) },
           element('span', { class: 'severity' }, diagnostic.severity),
-          element('span', { class: 'place' }, `${diagnostic.line}:${diagnostic.column}`),
+          element('span', { class: 'place' }, placeText(diagnostic, openFile)),
           element('span', { class: 'message' }, diagnostic.message),
           diagnostic.hint ? element('span', { class: 'hint' }, diagnostic.hint) : null,
           diagnostic.block ? element('span', { class: 'block-name' }, diagnostic.block) : null)))));

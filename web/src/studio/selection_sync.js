@@ -1,6 +1,7 @@
 // Where the diagram's selection is in the text, and what in the diagram the text's cursor is on.
 // Pure: the diagram is the server's `diagram`, places are its 1-based lines and columns, and a
-// document is anything with line(n) -> {from, to, text} and lines (CodeMirror's Text).
+// document is anything with line(n) -> {from, to, text} and lines (CodeMirror's Text). A place
+// with a `file` is in a referenced model's file, not in the text: it is never looked for there.
 
 export function systemOfBlock(blockId) {
   return blockId.split('/').slice(0, -1).join('/');
@@ -9,7 +10,7 @@ export function systemOfBlock(blockId) {
 // The innermost block whose lines hold `line`, searching inside subsystems.
 export function blockAtLine(system, line) {
   for (const block of system?.blocks ?? []) {
-    if (line < block.line || line > (block.end_line ?? block.line)) continue;
+    if (block.file || line < block.line || line > (block.end_line ?? block.line)) continue;
     return blockAtLine(block.system, line) ?? block;
   }
   return null;
@@ -40,7 +41,7 @@ export function wireAtCursor(diagram, line, column, lineText) {
   for (const system of systemsOf(diagram.root)) {
     for (const block of system.blocks ?? []) {
       for (const port of [...(block.inputs ?? []), ...(block.outputs ?? [])]) {
-        if (port.line !== line || !port.signal) continue;
+        if (port.file || port.line !== line || !port.signal) continue;
         const span = portValueSpan(lineText, port.column);
         if (span && span.name === port.signal && column >= span.start && column <= span.end) {
           const wire = system.wires?.find((candidate) => candidate.signal === port.signal);
@@ -49,7 +50,7 @@ export function wireAtCursor(diagram, line, column, lineText) {
       }
     }
     for (const wire of system.wires ?? []) {
-      if (wire.line !== line) continue;
+      if (wire.file || wire.line !== line) continue;
       const span = identifierAt(lineText, wire.column);
       if (span && span.name === wire.signal && column >= span.start && column <= span.end) return { system: system.path, wire };
     }
@@ -89,13 +90,13 @@ export function textRangeOf(diagram, selection, doc) {
   if (!selection || !diagram) return null;
   if (selection.kind === 'block') {
     const block = findBlock(diagram, selection.id);
-    if (!block?.line || block.line > doc.lines) return null;
+    if (!block?.line || block.file || block.line > doc.lines) return null;
     const last = Math.min(block.end_line ?? block.line, doc.lines);
     return { from: doc.line(block.line).from, to: doc.line(last).to };
   }
   const found = findWire(diagram, selection.id);
   const wire = found?.wire;
-  if (!wire?.line || wire.line > doc.lines) return null;
+  if (!wire?.line || wire.file || wire.line > doc.lines) return null;
   const line = doc.line(wire.line);
   // The place may be a port's key (the driver's `y: signal`): select the name that follows.
   let column = wire.column ?? 1;

@@ -1,8 +1,8 @@
 #pragma once
 // What duet studio shows of a model's text (docs/STUDIO.md, the `model` message): the diagnostics of the same reader
-// and checker as `duet model check`, each tied to the block it lies in; the diagram (every system's blocks with
-// their ports and every signal as a wire, coloured by task); and the task table. The page draws this; it never
-// works out what the text means itself.
+// and checker as `duet model check`, each naming its file and tied to the block it lies in; the diagram (every system's
+// blocks with their ports and every signal as a wire, coloured by task); and the task table. The page draws this; it
+// never works out what the text means itself.
 
 #include <nlohmann/json.hpp>
 
@@ -20,6 +20,7 @@ namespace duet::studio {
 
 // A model's text read and checked: the model when it reads, the program when it also checks.
 struct CheckedText {
+  std::string file;                     // the model's, as check_text() was given it
   std::unique_ptr<model::Model> model;  // the program points into it
   std::optional<model::Program> program;
   std::vector<model::Diagnostic> diagnostics;
