@@ -52,7 +52,8 @@ Relay::Relay(RelayOptions options)
       channel_buffer_(xcp::ethernet_framing.frame_size(max_packet)),
       master_buffer_(xcp::ethernet_framing.frame_size(max_packet)),
       from_channel_(xcp::ethernet_framing, channel_buffer_, max_packet),
-      from_master_(xcp::ethernet_framing, master_buffer_, max_packet) {}
+      from_master_(xcp::ethernet_framing, master_buffer_, max_packet),
+      session_(options_.owed_answer_patience) {}
 
 Relay::~Relay() {
   for (int descriptor : {epoll_, listener_, udp_, wake_, retry_timer_, channel_, master_}) {
@@ -368,7 +369,7 @@ void Relay::release_held_commands() {
 }
 
 void Relay::flush_stale_frames() {
-  constexpr std::chrono::milliseconds gap{20};
+  const std::chrono::milliseconds gap = options_.quiet_gap;
   const auto now = std::chrono::steady_clock::now();
   const bool slave_frame_on_its_way = slave_next_counter_ && from_channel_.holds_start_of_frame(*slave_next_counter_);
   if (channel_ >= 0 && from_channel_.buffered() > 0 && now - channel_stalled_since_ >= gap && !slave_frame_on_its_way) {
@@ -444,7 +445,7 @@ void Relay::run(bool handle_signals, const std::function<std::string()>& more_st
     // Without a partial frame waiting, sleep until something happens; with one, wake up to give up on it.
     const bool waiting =
         (channel_ >= 0 && from_channel_.buffered() > 0) || (master_ >= 0 && from_master_.buffered() > 0);
-    int timeout = waiting ? 25 : udp_master_ ? 1000 : -1;
+    int timeout = waiting ? static_cast<int>(options_.quiet_gap.count()) + 5 : udp_master_ ? 1000 : -1;
     if (const auto owed_until = session_.owed_until()) {  // and to give up answers that do not come
       const auto left =
           std::chrono::ceil<std::chrono::milliseconds>(*owed_until - std::chrono::steady_clock::now()).count();

@@ -54,6 +54,10 @@ struct RelayOptions {
   // The kernel's send buffer towards the master: with the queue, all a slow master can hold up (0: the kernel's).
   int master_send_buffer = 256 * 1024;
   std::size_t channel_chunk = 496;
+  // A partial frame that waits this long without a byte is garbage (unless it is the slave's next frame, above).
+  std::chrono::milliseconds quiet_gap{20};
+  // How long the answers owed to a master that left (and to the relay's DISCONNECT) may take (SessionTracker).
+  std::chrono::milliseconds owed_answer_patience = SessionTracker::default_owed_answer_patience;
   bool verbose = false;
 };
 

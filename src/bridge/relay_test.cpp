@@ -29,6 +29,23 @@ namespace {
 
 using namespace duet::xcp::host;
 
+// How long a test waits for what must come: an answer, a state of the relay. Only a guard against a hang, never what
+// anything is expected to take: CI runs the tests of every build at once on two cores, the armhf ones under qemu-arm,
+// and a thread may wait seconds for its turn. (Below the relay's 30 s, after which a silent UDP master is forgotten.)
+constexpr std::chrono::seconds patience{20};
+constexpr int patience_ms = static_cast<int>(std::chrono::milliseconds{patience}.count());  // for poll()
+
+// Waits until `reached` holds, asking every millisecond; false if it still does not after `patience`.
+template <typename Condition>
+bool wait_until(Condition&& reached) {
+  const auto given_up = std::chrono::steady_clock::now() + patience;
+  while (!reached()) {
+    if (std::chrono::steady_clock::now() >= given_up) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds{1});
+  }
+  return true;
+}
+
 // Options for a relay to the tty at `path`, on any free port. (Built member by member: GCC 12 at -O3 misreads a
 // braced temporary holding strings as uninitialized.)
 RelayOptions options_for(const std::string& path) {
@@ -37,6 +54,9 @@ RelayOptions options_for(const std::string& path) {
   options.channel.path = path;
   options.channel_uri = "tty:" + path;
   options.listen_port = 0;
+  // The firmware on the pty answers when the machine lets its thread run: an answer owed is never given up in a test
+  // of anything else.
+  options.owed_answer_patience = patience;
   return options;
 }
 
@@ -72,7 +92,7 @@ class BridgeEndToEnd : public ::testing::Test {
     thread.join();
   }
 
-  Master connect(std::chrono::milliseconds timeout = std::chrono::milliseconds{1000}) {
+  Master connect(std::chrono::milliseconds timeout = patience) {
     auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay->port()}, timeout);
     EXPECT_TRUE(channel.ok()) << (channel.ok() ? "" : channel.error());
     return Master{std::move(channel).value(), timeout};
@@ -94,9 +114,9 @@ TEST_F(BridgeEndToEnd, CommandsAndTenSecondsOfDaqAtOneKilohertzWithoutLoss) {
   EXPECT_EQ(master.upload(0, 0x2000, 4).value(), std::vector<std::uint8_t>(values.begin(), values.end()));
 
   ASSERT_TRUE(master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, 0x1000, 4}}}}).ok());
-  std::vector<std::uint32_t> counters;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds{10};
-  while (std::chrono::steady_clock::now() < end) {
+  std::vector<std::uint32_t> counters;  // 10 s at 1 kHz, however long the machine takes to deliver them
+  const auto given_up = std::chrono::steady_clock::now() + std::chrono::seconds{10} + patience;
+  while (counters.size() < 10'000 && std::chrono::steady_clock::now() < given_up) {
     auto samples = master.receive_samples(std::chrono::milliseconds{50});
     ASSERT_TRUE(samples.ok()) << samples.error();
     for (const DaqSample& sample : samples.value()) {
@@ -107,7 +127,7 @@ TEST_F(BridgeEndToEnd, CommandsAndTenSecondsOfDaqAtOneKilohertzWithoutLoss) {
     }
   }
   ASSERT_TRUE(master.stop_daq().ok());
-  ASSERT_GT(counters.size(), 9000U);  // 10 s at 1 kHz, give or take the PC's scheduling
+  ASSERT_GE(counters.size(), 10'000U);
   std::size_t gaps = 0;
   for (std::size_t index = 1; index < counters.size(); ++index)
     gaps += counters[index] != counters[index - 1] + 1 ? 1U : 0U;
@@ -120,16 +140,14 @@ TEST_F(BridgeEndToEnd, GarbageOnTheChannelIsSkippedAndASecondMasterRefused) {
   Master master = connect();
   ASSERT_TRUE(master.connect().ok());
   firmware.inject({0x13, 0x00, 0x00, 0x00, 0xAB});  // a frame header that lies, then noise
-  std::this_thread::sleep_for(std::chrono::milliseconds{20});
+  // Nothing follows it on the line: after the quiet gap the relay gives the lie up, byte by byte.
+  ASSERT_TRUE(wait_until([this] { return relay->counters().garbage_bytes == 5; })) << relay->status();
   {
     Master intruder = connect(std::chrono::milliseconds{200});
     EXPECT_FALSE(intruder.connect().ok());
   }
-  // The lying header swallowed bytes until its frame was complete; the commands after it work again.
-  bool worked = false;
-  for (int attempt = 0; attempt < 5 && !worked; ++attempt) worked = master.upload(0, 0x1000, 4).ok();
-  EXPECT_TRUE(worked);
-  EXPECT_GT(relay->counters().garbage_bytes, 0U);
+  EXPECT_TRUE(master.upload(0, 0x1000, 4).ok());  // (accepted and refused by now: it came before this command)
+  EXPECT_EQ(relay->counters().garbage_bytes, 5U);
   EXPECT_EQ(relay->counters().masters_refused, 1U);
 }
 
@@ -175,24 +193,28 @@ TEST_F(BridgeEndToEnd, AMasterThatVanishesIsDisconnectedAndManyMayFollow) {
   EXPECT_LE(open_descriptors(), descriptors_before + 2);  // the last master's two ends, nothing leaked
 }
 
-TEST_F(BridgeEndToEnd, SplitFramesAndAMasterKilledMidFrame) {
+TEST(BridgeRobustness, SplitFramesAndAMasterKilledMidFrame) {
+  PtyFirmware firmware;
+  firmware.start();
+  RelayOptions options = options_for(firmware.path());
+  options.quiet_gap = patience;  // however long the machine holds this thread between two bytes, they are one frame
+  RunningRelay running{options};
+  ASSERT_TRUE(running.started);
+  Relay& relay = running.relay;
   {  // half a CONNECT frame, then gone
-    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, patience);
     ASSERT_TRUE(channel.ok());
   }
-  const int socket = connect_raw(relay->port());
+  const int socket = connect_raw(relay.port());
   ASSERT_GE(socket, 0);
   const std::array<std::uint8_t, 6> connect{0x02, 0x00, 0x00, 0x00, 0xFF, 0x00};
   ASSERT_EQ(::send(socket, connect.data(), 3, 0), 3);
   ::close(socket);  // killed mid-frame
   // The relay serves one master at a time: the next comes once it has taken this one (the second served) and let it
   // go, which a loaded machine may take longer to do than an idle one.
-  const auto let_go = [&] { return relay->counters().masters_served >= 2 && !relay->master_connected(); };
-  for (int waited_ms = 0; !let_go() && waited_ms < 5000; ++waited_ms)
-    std::this_thread::sleep_for(std::chrono::milliseconds{1});
-  ASSERT_TRUE(let_go());
+  ASSERT_TRUE(wait_until([&relay] { return relay.counters().masters_served >= 2 && !relay.master_connected(); }));
   // A master whose frames arrive a byte at a time.
-  const int slow = connect_raw(relay->port());
+  const int slow = connect_raw(relay.port());
   ASSERT_GE(slow, 0);
   for (std::uint8_t byte : connect) {
     ASSERT_EQ(::send(slow, &byte, 1, 0), 1);
@@ -200,12 +222,12 @@ TEST_F(BridgeEndToEnd, SplitFramesAndAMasterKilledMidFrame) {
   }
   std::array<std::uint8_t, 64> answer{};
   pollfd readable{slow, POLLIN, 0};
-  ASSERT_EQ(::poll(&readable, 1, 1000), 1);
+  ASSERT_EQ(::poll(&readable, 1, patience_ms), 1);
   const ssize_t received = ::recv(slow, answer.data(), answer.size(), 0);
   ::close(slow);
   ASSERT_GE(received, 5);
-  EXPECT_EQ(answer[4], 0xFF);                      // CONNECT's positive response, framed
-  EXPECT_EQ(relay->counters().garbage_bytes, 3U);  // the half frame of the master killed mid-frame
+  EXPECT_EQ(answer[4], 0xFF);                     // CONNECT's positive response, framed
+  EXPECT_EQ(relay.counters().garbage_bytes, 3U);  // the half frame of the master killed mid-frame
 }
 
 TEST(BridgeRobustness, AMasterThatStopsReadingLosesDaqFramesButNotAnswers) {
@@ -218,14 +240,15 @@ TEST(BridgeRobustness, AMasterThatStopsReadingLosesDaqFramesButNotAnswers) {
   ASSERT_TRUE(running.started);
   Relay& relay = running.relay;
   {
-    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, std::chrono::milliseconds{1000});
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, patience);
     ASSERT_TRUE(channel.ok());
-    Master master{std::move(channel).value()};
+    Master master{std::move(channel).value(), patience};
     ASSERT_TRUE(master.connect().ok());
-    // 40 entries of 4 bytes per step: 1 kHz of 169-byte frames while the master reads nothing for 3 s.
+    // 40 entries of 4 bytes per step: 1 kHz of 169-byte frames while the master reads nothing, until the kernel's
+    // buffers and the relay's queue are full and the relay drops DAQ frames (a second or so).
     std::vector<DaqEntry> entries(40, DaqEntry{0, 0x1000, 4});
     ASSERT_TRUE(master.start_daq({{.event = 0, .prescaler = 1, .entries = entries}}).ok());
-    std::this_thread::sleep_for(std::chrono::seconds{3});
+    ASSERT_TRUE(wait_until([&relay] { return relay.counters().daq_frames_dropped > 0; })) << relay.status();
     // Whatever was dropped, commands still get their answers.
     const auto status = master.command(std::vector<std::uint8_t>{0xFD}, "GET_STATUS");
     EXPECT_TRUE(status.ok()) << status.error() << "; " << relay.status() << "; responses " << relay.counters().responses
@@ -233,7 +256,6 @@ TEST(BridgeRobustness, AMasterThatStopsReadingLosesDaqFramesButNotAnswers) {
                              << master.channel().bytes_received();
     EXPECT_TRUE(master.stop_daq().ok());
   }
-  EXPECT_GT(relay.counters().daq_frames_dropped, 0U);
 }
 
 TEST(BridgeRobustness, AChannelThatClosesIsReopenedAndServesAgain) {
@@ -247,25 +269,19 @@ TEST(BridgeRobustness, AChannelThatClosesIsReopenedAndServesAgain) {
   ASSERT_TRUE(running.started);
   Relay& relay = running.relay;
   auto talk = [&relay] {
-    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, std::chrono::milliseconds{1000});
+    auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, patience);
     if (!channel.ok()) return false;
-    Master master{std::move(channel).value(), std::chrono::milliseconds{300}};
+    Master master{std::move(channel).value(), patience};
     return master.connect().ok() && master.upload(0, 0x1000, 4).ok();
   };
   EXPECT_TRUE(talk());
   first.reset();  // the firmware goes away: the channel closes
-  const auto closed_by = std::chrono::steady_clock::now() + std::chrono::seconds{2};
-  while (relay.channel_open() && std::chrono::steady_clock::now() < closed_by)
-    std::this_thread::sleep_for(std::chrono::milliseconds{5});
-  EXPECT_FALSE(relay.channel_open());
+  EXPECT_TRUE(wait_until([&relay] { return !relay.channel_open(); }));
   PtyFirmware second;  // restarted
   second.start();
   std::filesystem::remove(link);
   std::filesystem::create_symlink(second.path(), link);
-  const auto reopened_by = std::chrono::steady_clock::now() + std::chrono::seconds{5};
-  while (!relay.channel_open() && std::chrono::steady_clock::now() < reopened_by)
-    std::this_thread::sleep_for(std::chrono::milliseconds{5});
-  EXPECT_TRUE(relay.channel_open());
+  EXPECT_TRUE(wait_until([&relay] { return relay.channel_open(); }));
   EXPECT_TRUE(talk());
   EXPECT_EQ(relay.counters().channel_opens, 2U);
   std::filesystem::remove(link);
@@ -291,14 +307,12 @@ class ScriptedSlave {
 // A master on `relay` whose first packet from the slave, `first`, has come; nullptr (and a failure) otherwise.
 std::unique_ptr<MasterChannel> master_after(Relay& relay, const ScriptedSlave& slave,
                                             const std::vector<std::uint8_t>& first) {
-  auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, std::chrono::milliseconds{1000});
+  auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, patience);
   EXPECT_TRUE(channel.ok());
   if (!channel.ok()) return nullptr;
-  const auto connected_by = std::chrono::steady_clock::now() + std::chrono::seconds{2};
-  while (!relay.master_connected() && std::chrono::steady_clock::now() < connected_by)
-    std::this_thread::sleep_for(std::chrono::milliseconds{1});
+  EXPECT_TRUE(wait_until([&relay] { return relay.master_connected(); }));
   slave.write(ScriptedSlave::frame(40, first));
-  auto received = channel.value()->receive(std::chrono::milliseconds{1000});
+  auto received = channel.value()->receive(patience);
   EXPECT_TRUE(received.ok() && received.value() && *received.value() == first);
   return std::move(channel).value();
 }
@@ -333,7 +347,7 @@ TEST(BridgeRobustness, ASlaveFramePausedLongerThanTheQuietGapReachesTheMasterWho
     std::this_thread::sleep_for(std::chrono::milliseconds{100});
     slave.write(rest);
     for (const std::vector<std::uint8_t>& expected : {daq, answer}) {
-      auto received = master->receive(std::chrono::milliseconds{1000});
+      auto received = master->receive(patience);
       ASSERT_TRUE(received.ok()) << received.error();
       ASSERT_TRUE(received.value().has_value())
           << "paused after " << pause_after << " bytes: nothing came; " << relay.status();
@@ -354,10 +368,10 @@ TEST(BridgeRobustness, APartialFrameThatIsNotTheSlavesNextIsGivenUpAfterTheQuiet
   ASSERT_NE(master, nullptr);
   ASSERT_TRUE(master->send(std::vector<std::uint8_t>{0xFD}).ok());       // GET_STATUS
   slave.write(std::vector<std::uint8_t>{0x13, 0x00, 0x00, 0x00, 0xAB});  // "19 bytes follow", counter 0: a lie
-  std::this_thread::sleep_for(std::chrono::milliseconds{100});
+  ASSERT_TRUE(wait_until([&relay] { return relay.counters().garbage_bytes == 5; })) << relay.status();
   const std::vector<std::uint8_t> answer{0xFF, 0x00, 0x00, 0x00, 0x00, 0x00};
   slave.write(ScriptedSlave::frame(41, answer));
-  auto received = master->receive(std::chrono::milliseconds{1000});
+  auto received = master->receive(patience);
   ASSERT_TRUE(received.ok()) << received.error();
   ASSERT_TRUE(received.value().has_value()) << "nothing came; " << relay.status();
   EXPECT_EQ(*received.value(), answer);
@@ -365,20 +379,20 @@ TEST(BridgeRobustness, APartialFrameThatIsNotTheSlavesNextIsGivenUpAfterTheQuiet
 }
 
 TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
-  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, patience);
   ASSERT_TRUE(channel.ok()) << channel.error();
-  Master master{std::move(channel).value(), std::chrono::milliseconds{1000}};
+  Master master{std::move(channel).value(), patience};
   ASSERT_TRUE(master.connect().ok());
   const std::array<std::uint8_t, 4> values{1, 2, 3, 4};
   ASSERT_TRUE(master.download(0, 0x2000, values).ok());
   EXPECT_EQ(master.upload(0, 0x2000, 4).value(), std::vector<std::uint8_t>(values.begin(), values.end()));
 
   ASSERT_TRUE(master.start_daq({{.event = 0, .prescaler = 1, .entries = {{0, 0x1000, 4}}}}).ok());
-  std::size_t samples = 0;
-  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds{1};
-  while (std::chrono::steady_clock::now() < end)
+  std::size_t samples = 0;  // a second's worth, however long the machine takes to deliver them
+  EXPECT_TRUE(wait_until([&] {
     samples += master.receive_samples(std::chrono::milliseconds{50}).value().size();
-  EXPECT_GT(samples, 900U);
+    return samples >= 1000;
+  }));
   EXPECT_EQ(master.channel().counter_gaps(), 0U);
 
   {  // others, on TCP or UDP, are refused while it is the master
@@ -387,9 +401,9 @@ TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
     auto other = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{200});
     ASSERT_TRUE(other.ok());
     Master on_udp{std::move(other).value(), std::chrono::milliseconds{200}};
-    EXPECT_FALSE(on_udp.connect().ok());
+    EXPECT_FALSE(on_udp.connect().ok());  // never answered: its datagrams are dropped, whenever the relay reads them
   }
-  EXPECT_GE(relay->counters().masters_refused, 2U);
+  EXPECT_TRUE(wait_until([this] { return relay->counters().masters_refused >= 2; }));
 
   ASSERT_TRUE(master.stop_daq().ok());
   ASSERT_TRUE(master.disconnect().ok());  // answered, then the master is forgotten: the next may come
@@ -399,19 +413,15 @@ TEST_F(BridgeEndToEnd, AMasterOnUdpIsServedAndHoldsOthersOff) {
 }
 
 TEST_F(BridgeEndToEnd, AUdpMasterWhoseDisconnectNoSlaveAnswersIsForgottenAtOnce) {
-  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, std::chrono::milliseconds{1000});
+  auto channel = MasterChannel::open({Protocol::udp, "127.0.0.1", relay->port()}, patience);
   ASSERT_TRUE(channel.ok()) << channel.error();
   const std::array<std::uint8_t, 1> disconnect{0xFE};  // and no session: the slave will not answer it
   ASSERT_TRUE(channel.value()->send(disconnect).ok());
-  const auto forgotten_by = std::chrono::steady_clock::now() + std::chrono::seconds{1};
-  while ((relay->counters().masters_served == 0 || relay->master_connected()) &&
-         std::chrono::steady_clock::now() < forgotten_by) {
-    std::this_thread::sleep_for(std::chrono::milliseconds{5});
-  }
-  EXPECT_EQ(relay->counters().masters_served, 1U);
-  EXPECT_FALSE(relay->master_connected());  // not after 30 s of silence
+  // Served, then forgotten within the patience: not after 30 s of silence.
+  EXPECT_TRUE(wait_until([this] { return relay->counters().masters_served == 1 && !relay->master_connected(); }));
   Master next = connect();
   EXPECT_TRUE(next.connect().ok());
+  EXPECT_EQ(relay->counters().masters_refused, 0U);  // accepted after the datagram was read: it was forgotten then
 }
 
 TEST_F(BridgeEndToEnd, GarbageFromTheMasterIsSkippedAndCommandsWorkAfterIt) {
@@ -422,7 +432,7 @@ TEST_F(BridgeEndToEnd, GarbageFromTheMasterIsSkippedAndCommandsWorkAfterIt) {
   ASSERT_EQ(::send(socket, bytes.data(), bytes.size(), 0), static_cast<ssize_t>(bytes.size()));
   std::array<std::uint8_t, 64> answer{};
   pollfd readable{socket, POLLIN, 0};
-  ASSERT_EQ(::poll(&readable, 1, 1000), 1);
+  ASSERT_EQ(::poll(&readable, 1, patience_ms), 1);
   const ssize_t received = ::recv(socket, answer.data(), answer.size(), 0);
   ASSERT_GE(received, 5);
   EXPECT_EQ(answer[4], 0xFF);  // CONNECT's positive response
@@ -441,7 +451,7 @@ TEST_F(BridgeEndToEnd, OnUdpAPartialFrameIsGarbageAndAFrameTooLongForADatagramIs
   const auto answer_is_positive = [socket] {
     std::array<std::uint8_t, 2048> answer{};
     pollfd readable{socket, POLLIN, 0};
-    return ::poll(&readable, 1, 1000) == 1 && ::recv(socket, answer.data(), answer.size(), 0) >= 5 &&
+    return ::poll(&readable, 1, patience_ms) == 1 && ::recv(socket, answer.data(), answer.size(), 0) >= 5 &&
            answer[4] == xcp::pid::response;
   };
   // CONNECT, then the first three bytes of a frame that the datagram does not hold.
@@ -467,10 +477,13 @@ TEST_F(BridgeEndToEnd, OnUdpAPartialFrameIsGarbageAndAFrameTooLongForADatagramIs
 using Packet = std::vector<std::uint8_t>;
 using Microseconds = std::chrono::duration<double, std::micro>;
 
+// The relay's own answer to a command it cannot pass on: ERR_CMD_BUSY.
+const Packet busy{xcp::pid::error, static_cast<std::uint8_t>(xcp::Error::cmd_busy)};
+
 // Long enough that an answer paired with a command from before it would show in latency_max_us.
 constexpr std::chrono::milliseconds telling_pause{100};
 
-Master master_of(const Relay& relay, std::chrono::milliseconds timeout = std::chrono::milliseconds{1000}) {
+Master master_of(const Relay& relay, std::chrono::milliseconds timeout = patience) {
   auto channel = MasterChannel::open({Protocol::tcp, "127.0.0.1", relay.port()}, timeout);
   EXPECT_TRUE(channel.ok()) << (channel.ok() ? "" : channel.error());
   return Master{std::move(channel).value(), timeout};
@@ -508,9 +521,9 @@ class RawMaster {
     return ::send(socket_, bytes.data(), bytes.size(), MSG_NOSIGNAL) == static_cast<ssize_t>(bytes.size());
   }
 
-  // The next answer (a positive response or an ERR) within a second; none if it did not come.
+  // The next answer (a positive response or an ERR); none if it did not come within the patience.
   std::optional<Packet> answer() {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds{1};
+    const auto deadline = std::chrono::steady_clock::now() + patience;
     for (;;) {
       while (!packets_.empty()) {
         Packet packet = std::move(packets_.front());
@@ -667,11 +680,14 @@ TEST(BridgeSessions, ACommandSentBeforeTheLastWasAnsweredLeavesThatOneUnanswered
 TEST(BridgeSessions, AnAnswerThatNeverComesHoldsTheNextMasterBackOnlyBriefly) {
   PtyFirmware firmware;
   firmware.start();
-  RunningRelay running{options_for(firmware.path())};
+  RelayOptions options = options_for(firmware.path());
+  options.owed_answer_patience = SessionTracker::default_owed_answer_patience;  // the answer that never comes
+  RunningRelay running{options};
   ASSERT_TRUE(running.started);
   Relay& relay = running.relay;
   {
     RawMaster first{relay.port()};
+    ASSERT_TRUE(wait_until([&relay] { return relay.master_connected(); }));  // or the response would go to nobody
     // A positive response out of the blue, as from a session older than the relay: the relay takes the slave for
     // connected, which it is not.
     firmware.inject({0x01, 0x00, 0x00, 0x00, 0xFF});
@@ -693,24 +709,21 @@ TEST(BridgeSessions, CommandsBeforeTheChannelIsOpenAreAnsweredBusy) {
   ASSERT_TRUE(running.started);
   Relay& relay = running.relay;
   {
-    Master early = master_of(relay);
-    const auto refused = early.connect();
-    ASSERT_FALSE(refused.ok());
-    EXPECT_NE(refused.error().find("ERR_CMD_BUSY"), std::string::npos) << refused.error();
+    // A master repeats a command answered ERR_CMD_BUSY (duet's until its timeout): each try is refused and counted.
+    RawMaster early{relay.port()};
+    for (std::uint64_t tries = 1; tries <= 3; ++tries) {
+      ASSERT_TRUE(early.send({{0xFF, 0x00}}));  // CONNECT
+      EXPECT_EQ(early.answer(), busy);
+      EXPECT_EQ(relay.counters().commands_refused, tries);
+    }
   }
-  // The master repeats a command answered ERR_CMD_BUSY until its timeout: each try is refused and counted.
-  const std::uint64_t refused_early = relay.counters().commands_refused;
-  EXPECT_GE(refused_early, 2U);
   PtyFirmware firmware;  // the firmware comes up
   firmware.start();
   std::filesystem::create_symlink(firmware.path(), link);
-  const auto opened_by = std::chrono::steady_clock::now() + std::chrono::seconds{5};
-  while (!relay.channel_open() && std::chrono::steady_clock::now() < opened_by)
-    std::this_thread::sleep_for(std::chrono::milliseconds{5});
-  ASSERT_TRUE(relay.channel_open());
+  ASSERT_TRUE(wait_until([&relay] { return relay.channel_open(); }));
   Master later = master_of(relay);
   EXPECT_TRUE(later.connect().ok());
-  EXPECT_EQ(relay.counters().commands_refused, refused_early);
+  EXPECT_EQ(relay.counters().commands_refused, 3U);
   std::filesystem::remove(link);
 }
 
@@ -722,16 +735,23 @@ TEST(BridgeSessions, CommandsBeyondTheQueueTowardsTheSlaveAreAnsweredBusy) {
   RunningRelay running{options};
   ASSERT_TRUE(running.started);
   Relay& relay = running.relay;
-  Master master = master_of(relay);
-  ASSERT_TRUE(master.connect().ok());
-  const Packet values(30, 7);
-  const Status refused = master.download(0, 0x3000, values);  // DOWNLOAD: 32 bytes and LEN/CTR, more than may wait
-  ASSERT_FALSE(refused.ok());
-  EXPECT_NE(refused.error().find("ERR_CMD_BUSY"), std::string::npos) << refused.error();
-  const std::uint64_t refused_large = relay.counters().commands_refused;  // every repetition of it
-  EXPECT_GE(refused_large, 2U);
-  EXPECT_TRUE(master.download(0, 0x3000, std::span{values}.first(4)).ok());
-  EXPECT_EQ(relay.counters().commands_refused, refused_large);
+  RawMaster master{relay.port()};
+  ASSERT_TRUE(master.send({{0xFF, 0x00}}));  // CONNECT
+  ASSERT_TRUE(master.answer());
+  ASSERT_TRUE(master.send({{0xF6, 0x00, 0x00, 0x00, 0x00, 0x30, 0x00, 0x00}}));  // SET_MTA to the table
+  ASSERT_TRUE(master.answer());
+  // DOWNLOAD of 30 bytes: 32 bytes and LEN/CTR, more than may wait. Refused each time the master repeats it.
+  Packet large(2 + 30, 7);
+  large[0] = 0xF0;
+  large[1] = 30;
+  for (std::uint64_t tries = 1; tries <= 3; ++tries) {
+    ASSERT_TRUE(master.send({large}));
+    EXPECT_EQ(master.answer(), busy);
+    EXPECT_EQ(relay.counters().commands_refused, tries);
+  }
+  ASSERT_TRUE(master.send({{0xF0, 4, 7, 7, 7, 7}}));  // DOWNLOAD of 4 bytes: it fits, at the MTA set before
+  EXPECT_EQ(master.answer(), Packet{xcp::pid::response});
+  EXPECT_EQ(relay.counters().commands_refused, 3U);
   EXPECT_EQ(firmware.table[3], 7);
 }
 

@@ -32,14 +32,14 @@ bool SessionTracker::master_gone(Clock::time_point now) {
     if (!awaited.for_master) continue;
     connecting = connecting || awaited.command == code(xcp::Command::connect);
     awaited.for_master = false;
-    owed_until_ = now + owed_answer_patience;
+    owed_until_ = now + owed_answer_patience_;
   }
   return slave_connected_ || connecting;
 }
 
 void SessionTracker::relay_disconnect(Clock::time_point now) {
   awaited_.push_back({.command = code(xcp::Command::disconnect), .sent = now, .for_master = false});
-  owed_until_ = now + owed_answer_patience;
+  owed_until_ = now + owed_answer_patience_;
   slave_connected_ = false;  // as far as the relay can end it; should it not answer, it was not connected either
 }
 

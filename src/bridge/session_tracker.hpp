@@ -10,7 +10,7 @@
 //
 // When the master goes away, the answers its commands wait for are owed to nobody, as is the answer to the DISCONNECT
 // the relay then sends on its behalf. While answers are owed the relay holds the next master's commands back, or it
-// could not tell their answers from the owed ones; an owed answer that has not come after `owed_answer_patience` is
+// could not tell their answers from the owed ones; an owed answer that has not come after the tracker's patience is
 // given up (the slave was not connected after all).
 
 #include <atomic>
@@ -27,7 +27,10 @@ class SessionTracker {
   using Clock = std::chrono::steady_clock;
   // Far longer than a slave takes to answer DISCONNECT, far shorter than a master waits for an answer (XCP's T1,
   // typically 1 s): a master held back meanwhile still gets its answer in time.
-  static constexpr std::chrono::milliseconds owed_answer_patience{200};
+  static constexpr std::chrono::milliseconds default_owed_answer_patience{200};
+
+  explicit SessionTracker(std::chrono::milliseconds owed_answer_patience = default_owed_answer_patience)
+      : owed_answer_patience_(owed_answer_patience) {}
 
   struct Figures {
     std::uint64_t responses = 0;  // answers to the master's commands, paired with them: their latency is measured
@@ -70,6 +73,7 @@ class SessionTracker {
   void forget_master_command();
   void measure(const Awaited& answered, Clock::time_point now);
 
+  std::chrono::milliseconds owed_answer_patience_;
   bool slave_connected_ = false;
   // Oldest first; at most two: one of the master's, or one of a master that left and the relay's DISCONNECT (the
   // next master's commands are held back while answers are owed).

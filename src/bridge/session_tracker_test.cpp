@@ -140,10 +140,10 @@ TEST_F(SessionTrackerTest, OwedAnswersThatNeverComeAreGivenUpInTime) {
   connected();
   ASSERT_TRUE(tracker.master_gone(at(10)));
   tracker.relay_disconnect(at(10));
-  EXPECT_EQ(tracker.owed_until(), at(10) + SessionTracker::owed_answer_patience);
+  EXPECT_EQ(tracker.owed_until(), at(10) + SessionTracker::default_owed_answer_patience);
   EXPECT_FALSE(tracker.give_up_owed_answers(at(11)));
   EXPECT_TRUE(tracker.owes_answers());
-  EXPECT_TRUE(tracker.give_up_owed_answers(at(10) + SessionTracker::owed_answer_patience));
+  EXPECT_TRUE(tracker.give_up_owed_answers(at(10) + SessionTracker::default_owed_answer_patience));
   EXPECT_FALSE(tracker.owes_answers());
   EXPECT_EQ(tracker.figures().commands_unanswered, 1U);
   EXPECT_TRUE(tracker.master_command(connect, at(300)));
