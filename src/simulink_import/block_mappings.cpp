@@ -34,6 +34,14 @@ bool inherits_type(ImportContext& context) {
   return false;
 }
 
+// Whether an option that only newer releases write is, where the block has it, `expected`; refuses with `what`
+// otherwise. A file of an older release, without it, computes as `expected` does.
+bool absent_or(ImportContext& context, const std::string& name, const std::string& expected, const std::string& what) {
+  const Block& block = context.block();
+  const bool stored = block.mask_parameters.count(name) != 0 || block.parameters.count(name) != 0;
+  return !stored || context.require(name, expected, what);
+}
+
 // Whether a logic block's output is a boolean, as duet's Logic, Not, Compare and Relational give: its OutDataTypeStr
 // boolean, or the default "Inherit: Logical" (a boolean where the model implements logic signals as booleans, the
 // default). Another type (uint8, a fixed-point type) holds the same 0 and 1, but arithmetic after it would not be
@@ -232,9 +240,7 @@ void on_integer_overflow(ImportContext& context) {
 void saturation(ImportContext& context) {
   if (!inherits_type(context)) return;
   for (const char* source : {"UpperLimitSource", "LowerLimitSource"}) {
-    if (context.block().parameters.count(source) != 0 &&
-        !context.require(source, "Dialog", "limits from input ports are not duet's Saturation's"))
-      return;
+    if (!absent_or(context, source, "Dialog", "limits from input ports are not duet's Saturation's")) return;
   }
   const auto upper = context.parameter("UpperLimit");
   const auto lower = context.parameter("LowerLimit");
@@ -368,14 +374,6 @@ void compare_to_constant(ImportContext& context) {
   const std::string operation = *relop == "~=" ? "!=" : *relop;
   unary(context, "Compare", {{"operator", quoted(operation)}, {"value", *constant_value}}, false,
         "Compare " + operation + " " + *constant_value);
-}
-
-// Whether an option that only newer releases write is, where the block has it, `expected`; refuses with `what`
-// otherwise. A file of an older release, without it, computes as `expected` does.
-bool absent_or(ImportContext& context, const std::string& name, const std::string& expected, const std::string& what) {
-  const Block& block = context.block();
-  const bool stored = block.mask_parameters.count(name) != 0 || block.parameters.count(name) != 0;
-  return !stored || context.require(name, expected, what);
 }
 
 // Whether every data type the PID's dialog sets (PParamDataTypeStr, SumOutDataTypeStr, ...) is inherited: duet's
@@ -703,8 +701,7 @@ void lookup(ImportContext& context) {
     return;
   // Newer releases can take the table or the breakpoints from input ports; older files do not have the option.
   for (const char* source : {"TableSource", "BreakpointsForDimension1Source"}) {
-    if (context.block().parameters.count(source) != 0 &&
-        !context.require(source, "Dialog", "a table or breakpoints from input ports are not duet's Interpolation's"))
+    if (!absent_or(context, source, "Dialog", "a table or breakpoints from input ports are not duet's Interpolation's"))
       return;
   }
   static const std::map<std::string, std::string, std::less<>> methods{{"Linear point-slope", "linear"},
@@ -764,9 +761,7 @@ void math(ImportContext& context) {
                  "Product u u");
   } else if (*operation == "reciprocal") {
     // Newton-Raphson approximates 1/u in a number of iterations; duet divides.
-    if (context.block().parameters.count("AlgorithmType") != 0 &&
-        !context.require("AlgorithmType", "Exact", "duet's reciprocal is the exact division 1/u"))
-      return;
+    if (!absent_or(context, "AlgorithmType", "Exact", "duet's reciprocal is the exact division 1/u")) return;
     const std::string one = context.new_signal_name(context.block_name + "_one");
     context.emit({.name = context.new_block_name(context.block_name + "_one"),
                   .type = "Constant",
