@@ -479,12 +479,7 @@ void pid(ImportContext& context) {
 void data_type_conversion(ImportContext& context) {
   const auto type = context.raw("OutDataTypeStr");
   if (!type) return;
-  static const std::map<std::string, std::string, std::less<>> types{
-      {"double", "double"}, {"single", "single"}, {"int8", "int8"},     {"int16", "int16"},     {"int32", "int32"},
-      {"uint8", "uint8"},   {"uint16", "uint16"}, {"uint32", "uint32"}, {"boolean", "boolean"},
-  };
-  const auto found = types.find(*type);
-  if (found == types.end()) {
+  if (!is_duet_type(*type)) {
     context.refuse("OutDataTypeStr '" + *type +
                    "': duet's Convert needs the output type written out (double, "
                    "single, int8 ... uint32, boolean)");
@@ -492,13 +487,13 @@ void data_type_conversion(ImportContext& context) {
   }
   if (!context.require("ConvertRealWorld", "Real World Value (RWV)", "duet converts values, not stored integers"))
     return;
-  const bool to_integer = found->second != "double" && found->second != "single" && found->second != "boolean";
+  const bool to_integer = *type != "double" && *type != "single" && *type != "boolean";
   if (to_integer && (!context.require("RndMeth", "Zero", "duet's Convert rounds toward zero") ||
                      !context.require("SaturateOnIntegerOverflow", "on", "duet's Convert saturates")))
     return;
   // Its SampleTime, where the block stores one (a hidden parameter, written only when not -1); inherited otherwise.
   const bool sampled = context.block().parameters.count("SampleTime") != 0;
-  unary(context, "Convert", {{"type", found->second}}, sampled, "Convert to " + found->second);
+  unary(context, "Convert", {{"type", *type}}, sampled, "Convert to " + *type);
 }
 
 void mux(ImportContext& context) {

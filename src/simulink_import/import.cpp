@@ -54,13 +54,10 @@ struct Trigger {
 // triggering edges (a rise from below zero to zero or above, or from zero to above; falls likewise) are duet's
 // (from zero or below to above zero; from above zero to zero or below).
 bool never_negative(const Block& driver, bool in_root) {
-  static const std::set<std::string, std::less<>> comparisons{"RelationalOperator", "Logic"};
-  static const std::set<std::string, std::less<>> compare_links{"Compare To Constant", "Compare To Zero"};
+  static const std::set<std::string, std::less<>> comparisons{"RelationalOperator", "Logic", "Compare To Constant",
+                                                              "Compare To Zero"};
   static const std::set<std::string, std::less<>> unsigned_types{"boolean", "uint8", "uint16", "uint32"};
-  if (comparisons.count(driver.type) != 0) return true;
-  const auto source_type = driver.parameters.find("SourceType");
-  if (driver.type == "Reference" && source_type != driver.parameters.end())
-    return compare_links.count(source_type->second) != 0;
+  if (comparisons.count(type_name(driver)) != 0) return true;
   const bool typed = driver.type == "DataTypeConversion" || (driver.type == "Inport" && in_root);
   const auto type = driver.parameters.find("OutDataTypeStr");
   return typed && type != driver.parameters.end() && unsigned_types.count(type->second) != 0;
@@ -439,10 +436,7 @@ class Importer final : public ImportModel {
       return;
     }
     if (!inport && !root) {
-      const auto setting = [&block](const char* parameter, const char* otherwise) {
-        return stored_or(block, parameter, otherwise);
-      };
-      if (setting("OutputWhenDisabled", "held") != "held" || setting("InitialOutput", "[]") != "[]") {
+      if (stored_or(block, "OutputWhenDisabled", "held") != "held" || stored_or(block, "InitialOutput", "[]") != "[]") {
         verdict.what =
             "it resets or starts from an initial output while its subsystem is disabled; duet's "
             "subsystems hold their outputs";
@@ -453,11 +447,9 @@ class Importer final : public ImportModel {
     if (root) {
       // A plant hands doubles; an inport of another type converts them, as its OutDataTypeStr says.
       const auto declared = block.parameters.find("OutDataTypeStr");
-      static const std::set<std::string, std::less<>> types{"double", "single", "int8",   "int16",  "int32",
-                                                            "uint8",  "uint16", "uint32", "boolean"};
       const bool typed = inport && declared != block.parameters.end() && declared->second != "double" &&
                          !declared->second.starts_with("Inherit:");
-      if (typed && types.count(declared->second) == 0) {
+      if (typed && !is_duet_type(declared->second)) {
         verdict.what = "OutDataTypeStr '" + declared->second + "' is no type duet has";
         refuse(verdict);
         return;

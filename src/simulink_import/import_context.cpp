@@ -1,6 +1,8 @@
 #include "import_context.hpp"
 
 #include <cmath>
+#include <functional>
+#include <set>
 
 #include "duet/simulink_import/builtin_defaults.hpp"
 
@@ -14,6 +16,12 @@ std::string trimmed(const std::string& text) {
 std::string stored_or(const Block& block, const char* name, const char* otherwise) {
   const auto found = block.parameters.find(name);
   return found == block.parameters.end() ? std::string{otherwise} : trimmed(found->second);
+}
+
+bool is_duet_type(const std::string& type) {
+  static const std::set<std::string, std::less<>> types{"double", "single", "int8",   "int16",  "int32",
+                                                        "uint8",  "uint16", "uint32", "boolean"};
+  return types.count(type) != 0;
 }
 
 std::string type_name(const Block& block) {

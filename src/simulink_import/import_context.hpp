@@ -21,6 +21,10 @@ class ImportContext;
 // A block's parameter as stored, trimmed, or `otherwise` where the block does not store it.
 [[nodiscard]] std::string stored_or(const Block& block, const char* name, const char* otherwise);
 
+// Whether a Simulink data type (an OutDataTypeStr) is one of duet's, which have the same names: double, single,
+// int8 ... uint32, boolean.
+[[nodiscard]] bool is_duet_type(const std::string& type);
+
 // What a block is: a library link by what it links to (its SourceType, "PID 1dof"), any other by its BlockType.
 [[nodiscard]] std::string type_name(const Block& block);
 
