@@ -12,7 +12,6 @@
 
 #include "duet/model/simulation.hpp"
 #include "duet/simulink_import/import.hpp"
-#include "duet/simulink_import/import_options.hpp"
 #include "duet/simulink_import/slx_model.hpp"
 #include "testing/import_harness.hpp"
 #include "testing/package_folder.hpp"
@@ -38,9 +37,7 @@ class BlockOptions : public ::testing::Test {
     ASSERT_TRUE(model) << model.error();
     ASSERT_EQ(model.value().release, "R2020a");
     ASSERT_EQ(model.value().format, "slx (systems/)");
-    auto variables = read_variable_files({(testing / "options_r2020a.m").string()});
-    ASSERT_TRUE(variables) << variables.error();
-    imported_ = import_simulink(model.value(), {.variables = variables.value()});
+    imported_ = imported_with(model, "options_r2020a.m");
     const auto build = checked(imported_, keep_);
     ASSERT_TRUE(build);
     plant_.period_s = 0.25;

@@ -19,7 +19,6 @@
 #include "duet/model/simulation.hpp"
 #include "duet/plant/balbot/balbot_plant.hpp"
 #include "duet/plant/plant.hpp"
-#include "duet/simulink_import/import_options.hpp"
 #include "duet/simulink_import/simulink_file.hpp"
 #include "duet/simulink_import/slx_model.hpp"
 #include "duet/support/temporary_folder.hpp"
@@ -33,21 +32,6 @@ namespace {
 using ::testing::HasSubstr;
 
 const std::filesystem::path testing = DUET_SIMULINK_TESTING_DIR;
-
-// A test model imported with the variables of a script in testing/; where either cannot be read, the test fails and
-// the result is empty.
-ImportResult imported_with(const Result<SimulinkModel>& model, const std::string& script) {
-  if (!model) {
-    ADD_FAILURE() << model.error();
-    return {};
-  }
-  auto variables = read_variable_files({(testing / script).string()});
-  if (!variables) {
-    ADD_FAILURE() << variables.error();
-    return {};
-  }
-  return import_simulink(model.value(), {.variables = variables.value()});
-}
 
 TEST(Import, TheTiltLoopBecomesAModelThatChecksAndComputesWhatSimulinkDoes) {
   const SimulinkModel model = read_slx_model(parts_of(testing / "slx_r2019b"), "tilt_loop.slx").value();

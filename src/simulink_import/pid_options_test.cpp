@@ -16,7 +16,6 @@
 #include "duet/model/model_file.hpp"
 #include "duet/model/simulation.hpp"
 #include "duet/simulink_import/import.hpp"
-#include "duet/simulink_import/import_options.hpp"
 #include "duet/simulink_import/simulink_file.hpp"
 #include "testing/import_harness.hpp"
 
@@ -88,13 +87,11 @@ struct Simulated {
 
 Simulated import_and_simulate() {
   Simulated result;
-  auto model = read_simulink_file(testing / "pid_options.mdl");
-  EXPECT_TRUE(model) << (model ? "" : model.error());
-  auto variables = read_variable_files({(testing / "pid_options.m").string()});
-  EXPECT_TRUE(variables) << (variables ? "" : variables.error());
-  if (!model || !variables) return result;
-  EXPECT_EQ(model.value().format, "mdl (classic)");
-  result.imported = import_simulink(model.value(), {.variables = variables.value()});
+  const auto model = read_simulink_file(testing / "pid_options.mdl");
+  if (model) {
+    EXPECT_EQ(model.value().format, "mdl (classic)");
+  }
+  result.imported = imported_with(model, "pid_options.m");
   std::unique_ptr<model::Model> keep;
   const auto build = checked(result.imported, keep);
   if (!build) return result;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -20,6 +21,8 @@
 #include "duet/model/program.hpp"
 #include "duet/plant/plant.hpp"
 #include "duet/simulink_import/import.hpp"
+#include "duet/simulink_import/import_options.hpp"
+#include "duet/support/result.hpp"
 
 namespace duet::simulink_import {
 
@@ -60,6 +63,21 @@ inline const Verdict& verdict(const ImportResult& result, const std::string& pat
   ADD_FAILURE() << "no verdict for " << path;
   static const Verdict none;
   return none;
+}
+
+// A test model imported with the variables of a script in testing/; where either cannot be read, the test fails and
+// the result is empty.
+inline ImportResult imported_with(const Result<SimulinkModel>& model, const std::string& script) {
+  if (!model) {
+    ADD_FAILURE() << model.error();
+    return {};
+  }
+  auto variables = read_variable_files({(std::filesystem::path{DUET_SIMULINK_TESTING_DIR} / script).string()});
+  if (!variables) {
+    ADD_FAILURE() << variables.error();
+    return {};
+  }
+  return import_simulink(model.value(), {.variables = variables.value()});
 }
 
 // A duet block's output type in `program`, as integer_problems asks for it.
